@@ -1,0 +1,27 @@
+#pragma once
+// Properties of one three-layer shell element: the two membrane faces and the interlayer (core).
+#include <Eigen/Dense>
+
+namespace tirefem {
+
+// Membrane stiffness of a face, N = A · E, Voigt order [11, 22, 12] with engineering shear (2 E12),
+// in the element's local frame: axis 1 along the element's ξ direction (the meridian on a tyre),
+// axis 2 = normal × axis 1 (the circumferential direction). Units N/mm.
+using MembraneStiffness = Eigen::Matrix3d;
+
+struct ElementSection {
+  MembraneStiffness inner_face = MembraneStiffness::Zero();  // carcass
+  MembraneStiffness outer_face = MembraneStiffness::Zero();  // breaker / sidewall layer
+  double core_shear_modulus = 0.0;   // transverse shear modulus G13 = G23 of the interlayer, MPa
+  double core_normal_modulus = 0.0;  // through-thickness modulus of the interlayer, MPa
+};
+
+// Isotropic membrane of thickness t (plane stress): A = E t / (1 − ν²) [[1, ν, 0], [ν, 1, 0], [0, 0, (1 − ν)/2]].
+inline MembraneStiffness isotropic_membrane(double youngs_modulus, double poisson, double thickness) {
+  const double c = youngs_modulus * thickness / (1.0 - poisson * poisson);
+  MembraneStiffness a;
+  a << c, c * poisson, 0, c * poisson, c, 0, 0, 0, c * (1.0 - poisson) / 2.0;
+  return a;
+}
+
+}  // namespace tirefem

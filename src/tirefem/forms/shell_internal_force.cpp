@@ -1,0 +1,39 @@
+#include "tirefem/forms/shell_internal_force.hpp"
+
+#include <stdexcept>
+
+namespace tirefem {
+
+Eigen::Matrix<double, 3, 8> element_current(const ShellMesh& mesh, int element,
+                                            const Eigen::VectorXd& u) {
+  Eigen::Matrix<double, 3, 8> x = mesh.element_reference(element);
+  const auto dofs = mesh.element_dofs(element);
+  for (int k = 0; k < 8; ++k)
+    for (int c = 0; c < 3; ++c) x(c, k) += u[dofs[3 * k + c]];
+  return x;
+}
+
+ShellInternalForce::ShellInternalForce(const ShellMesh& mesh, const std::vector<ElementSection>& sections,
+                                       Kinematics kinematics)
+    : mesh_(mesh), sections_(sections), kinematics_(kinematics) {
+  if (static_cast<int>(sections.size()) != mesh.element_count())
+    throw std::invalid_argument("one section per element is required");
+}
+
+void ShellInternalForce::add_pattern(PatternBuilder& pattern) const {
+  for (int e = 0; e < mesh_.element_count(); ++e) pattern.add_block(mesh_.element_dofs(e));
+}
+
+void ShellInternalForce::assemble(const FormInput& input, SparseSystem& system) const {
+  const int n = mesh_.element_count();
+#pragma omp parallel for schedule(static)
+  for (int e = 0; e < n; ++e) {
+    const auto dofs = mesh_.element_dofs(e);
+    const ElementResponse r =
+        three_layer_element(mesh_.element_reference(e), element_current(mesh_, e, input.displacement),
+                            sections_[e], kinematics_, input.with_tangent);
+    system.add(dofs, r.force, r.tangent, input.with_tangent);
+  }
+}
+
+}  // namespace tirefem

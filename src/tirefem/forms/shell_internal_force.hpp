@@ -1,0 +1,28 @@
+#pragma once
+// Internal force and tangent of the three-layer shell elements (MODEL.md §3).
+#include <vector>
+
+#include "tirefem/element/three_layer_element.hpp"
+#include "tirefem/mesh/shell_mesh.hpp"
+#include "tirefem/solver/form.hpp"
+
+namespace tirefem {
+
+// Current positions of element `e`'s 8 nodes for displacement u.
+Eigen::Matrix<double, 3, 8> element_current(const ShellMesh& mesh, int element,
+                                            const Eigen::VectorXd& displacement);
+
+class ShellInternalForce final : public Form {
+ public:
+  ShellInternalForce(const ShellMesh& mesh, const std::vector<ElementSection>& sections,
+                     Kinematics kinematics);
+  void add_pattern(PatternBuilder& pattern) const override;
+  void assemble(const FormInput& input, SparseSystem& system) const override;
+
+ private:
+  const ShellMesh& mesh_;
+  const std::vector<ElementSection>& sections_;
+  Kinematics kinematics_;
+};
+
+}  // namespace tirefem

@@ -1,0 +1,91 @@
+#include "tirefem/solver/newton.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace tirefem {
+
+NewtonSolver::NewtonSolver(NonlinearProblem& problem, NewtonSettings settings)
+    : problem_(problem), settings_(settings), linear_(problem.symmetric()) {}
+
+NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
+  const DofMap& dofs = problem_.dofs();
+  const double reference = std::max(std::abs(load_factor), 1e-12) * problem_.load_scale();
+  NewtonOutcome out;
+  double increment_norm = 0.0;
+  double first_residual = -1.0;
+  for (int it = 0;; ++it) {
+    problem_.evaluate(u, load_factor, true);
+    const Eigen::VectorXd r = dofs.gather(problem_.system().residual());
+    const double rn = r.norm();
+    out.relative_residual = reference > 0 ? rn / reference : rn;
+    if (!std::isfinite(rn)) return out;
+    if (first_residual < 0) first_residual = rn;
+    const bool residual_ok = out.relative_residual <= settings_.residual_tolerance;
+    const bool increment_ok = it > 0 && increment_norm <= settings_.increment_tolerance * u.norm();
+    if (residual_ok && (increment_ok || it == 0 ||
+                        out.relative_residual <= 0.01 * settings_.residual_tolerance)) {
+      out.converged = true;
+      return out;
+    }
+    if (it >= settings_.max_iterations) return out;
+    if (it >= 3 && rn > 1e4 * first_residual) return out;  // diverging
+    try {
+      linear_.factorize(problem_.system().tangent());
+    } catch (const std::runtime_error&) {
+      return out;
+    }
+    const Eigen::VectorXd du = linear_.solve(-r);
+    if (!du.allFinite()) return out;
+    dofs.scatter_add(du, u);
+    increment_norm = du.norm();
+    ++out.iterations;
+    ++total_iterations_;
+  }
+}
+
+LoadPathResult follow_load_path(
+    NewtonSolver& newton, Eigen::VectorXd& u, const LoadSteppingSettings& settings,
+    const std::function<void(const LoadStepRecord&, const Eigen::VectorXd&)>& on_step,
+    const ProgressSink& progress) {
+  LoadPathResult result;
+  double lambda = 0.0;
+  double increment = std::min(settings.first_increment, settings.max_increment);
+  Eigen::VectorXd previous = u;  // converged state before the last one
+  double previous_lambda = 0.0;
+  while (lambda < 1.0 - 1e-12) {
+    increment = std::min(increment, 1.0 - lambda);
+    const double target = lambda + increment;
+    Eigen::VectorXd trial = u;
+    if (lambda > previous_lambda)  // secant predictor from the last two converged states
+      trial += (target - lambda) / (lambda - previous_lambda) * (u - previous);
+    const NewtonOutcome outcome = newton.solve(trial, target);
+    if (!outcome.converged) {
+      ++result.cutbacks;
+      increment *= 0.5;
+      if (progress)
+        progress(fmt::format("  load factor {:.4f}: no convergence, increment cut to {:.4g}", target,
+                             increment));
+      if (increment < settings.min_increment) return result;
+      continue;
+    }
+    previous = u;
+    previous_lambda = lambda;
+    u = trial;
+    lambda = target;
+    const LoadStepRecord record{lambda, outcome.iterations, outcome.relative_residual};
+    result.steps.push_back(record);
+    if (progress)
+      progress(fmt::format("  load factor {:.4f}: {} Newton iterations, residual {:.2e}", lambda,
+                           outcome.iterations, outcome.relative_residual));
+    if (on_step) on_step(record, u);
+    if (outcome.iterations < settings.easy_iterations)
+      increment = std::min(1.5 * increment, settings.max_increment);
+  }
+  result.completed = true;
+  return result;
+}
+
+}  // namespace tirefem

@@ -1,0 +1,68 @@
+#pragma once
+// Newton–Raphson for R(u, λ) = 0 at a fixed load factor, and load stepping with automatic cut-back.
+#include <functional>
+#include <string>
+
+#include "tirefem/solver/linear_solver.hpp"
+#include "tirefem/solver/nonlinear_problem.hpp"
+
+namespace tirefem {
+
+using ProgressSink = std::function<void(const std::string&)>;
+
+struct NewtonSettings {
+  double residual_tolerance = 1e-8;   // ‖R_free‖ ≤ tol · λ‖F‖ (‖F‖ = size of the full applied load)
+  double increment_tolerance = 1e-7;  // ‖Δu‖ ≤ tol · ‖u‖
+  int max_iterations = 25;
+};
+
+struct NewtonOutcome {
+  bool converged = false;
+  int iterations = 0;              // linear solves
+  double relative_residual = 0.0;  // final ‖R_free‖ / (λ‖F‖)
+};
+
+class NewtonSolver {
+ public:
+  NewtonSolver(NonlinearProblem& problem, NewtonSettings settings);
+  // On failure u is left at the last iterate; the caller restores its own copy.
+  NewtonOutcome solve(Eigen::VectorXd& u, double load_factor);
+  NonlinearProblem& problem() { return problem_; }
+  const LinearSolverStats& linear_stats() const { return linear_.stats(); }
+  int total_iterations() const { return total_iterations_; }
+
+ private:
+  NonlinearProblem& problem_;
+  NewtonSettings settings_;
+  SparseDirectSolver linear_;
+  int total_iterations_ = 0;
+};
+
+struct LoadSteppingSettings {
+  double first_increment = 1.0;
+  double min_increment = 1.0 / 1024;
+  double max_increment = 1.0;
+  int easy_iterations = 4;  // fewer Newton iterations than this: the next increment grows
+};
+
+struct LoadStepRecord {
+  double load_factor = 0.0;
+  int iterations = 0;
+  double relative_residual = 0.0;
+};
+
+struct LoadPathResult {
+  bool completed = false;
+  std::vector<LoadStepRecord> steps;
+  int cutbacks = 0;
+};
+
+// Drives λ from 0 to 1. Each step starts from a secant prediction of the last two converged states; an
+// increment that does not converge is halved (down to min_increment). `on_step` sees each converged state.
+LoadPathResult follow_load_path(NewtonSolver& newton, Eigen::VectorXd& u,
+                                const LoadSteppingSettings& settings,
+                                const std::function<void(const LoadStepRecord&, const Eigen::VectorXd&)>&
+                                    on_step = {},
+                                const ProgressSink& progress = {});
+
+}  // namespace tirefem

@@ -1,0 +1,41 @@
+#include "tirefem/solver/nonlinear_problem.hpp"
+
+#include <chrono>
+
+namespace tirefem {
+namespace {
+SparseMatrix build_pattern(const DofMap& dofs, const std::vector<std::unique_ptr<Form>>& forms) {
+  PatternBuilder pattern;
+  for (const auto& f : forms) f->add_pattern(pattern);
+  return pattern.build(dofs);
+}
+}  // namespace
+
+NonlinearProblem::NonlinearProblem(DofMap dofs, std::vector<std::unique_ptr<Form>> forms)
+    : dofs_(std::move(dofs)), forms_(std::move(forms)), system_(dofs_, build_pattern(dofs_, forms_)) {}
+
+void NonlinearProblem::evaluate(const Eigen::VectorXd& displacement, double load_factor,
+                                bool with_tangent) {
+  const auto t0 = std::chrono::steady_clock::now();
+  system_.clear(with_tangent);
+  const FormInput input{displacement, load_factor, with_tangent};
+  for (const auto& f : forms_) f->assemble(input, system_);
+  ++stats_.assemblies;
+  stats_.assembly_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+bool NonlinearProblem::symmetric() const {
+  for (const auto& f : forms_)
+    if (!f->symmetric()) return false;
+  return true;
+}
+
+double NonlinearProblem::load_scale() {
+  if (load_scale_ < 0) {
+    evaluate(Eigen::VectorXd::Zero(dofs_.dof_count()), 1.0, false);
+    load_scale_ = dofs_.gather(system_.residual()).norm();
+  }
+  return load_scale_;
+}
+
+}  // namespace tirefem

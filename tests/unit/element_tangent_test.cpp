@@ -1,0 +1,129 @@
+// Tangent stiffness of every element-level term against central finite differences of its force
+// (reference: the definition K = ∂F/∂f; tolerance 1e-6 relative, what central differences with
+// h = 1e-6 of a smooth function give in double precision).
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "tirefem/element/follower_pressure.hpp"
+#include "tirefem/element/three_layer_element.hpp"
+
+namespace tirefem {
+namespace {
+
+// A curved, distorted element: carcass face on a cylinder-like patch, breaker 4 mm above.
+NodeMatrix curved_element() {
+  NodeMatrix x;
+  const double xs[4] = {0, 11, 12, -1}, ys[4] = {0, 1, 13, 10};
+  for (int a = 0; a < 4; ++a) {
+    const double z = 0.01 * (xs[a] * xs[a] + 0.5 * ys[a] * ys[a]);
+    x.col(a) = Eigen::Vector3d(xs[a], ys[a], z);
+    x.col(a + 4) = Eigen::Vector3d(xs[a] - 0.04 * xs[a], ys[a] - 0.02 * ys[a], z + 4.0);
+  }
+  return x;
+}
+
+NodeMatrix randomly_deformed(const NodeMatrix& x, double amplitude, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-amplitude, amplitude);
+  NodeMatrix y = x;
+  for (int k = 0; k < 8; ++k)
+    for (int c = 0; c < 3; ++c) y(c, k) += u(rng);
+  return y;
+}
+
+ElementSection anisotropic_section() {
+  ElementSection s;
+  s.inner_face << 3000, 300, 50, 300, 900, -40, 50, -40, 400;
+  s.outer_face << 5000, 2500, 0, 2500, 2000, 0, 0, 0, 2200;
+  s.core_shear_modulus = 1.5;
+  s.core_normal_modulus = 100;
+  return s;
+}
+
+template <class ForceOf>
+double max_relative_tangent_error(const NodeMatrix& x, const ElementMatrix& k, ForceOf force_of) {
+  const double h = 1e-6;
+  ElementMatrix fd;
+  for (int j = 0; j < kElementDofs; ++j) {
+    NodeMatrix xp = x, xm = x;
+    xp(j % 3, j / 3) += h;
+    xm(j % 3, j / 3) -= h;
+    fd.col(j) = (force_of(xp) - force_of(xm)) / (2 * h);
+  }
+  return (fd - k).norm() / k.norm();
+}
+
+TEST(ElementTangent, NonlinearInternalForceMatchesFiniteDifferences) {
+  const NodeMatrix x0 = curved_element();
+  const ElementSection s = anisotropic_section();
+  for (unsigned seed : {1u, 2u, 3u}) {
+    const NodeMatrix x = randomly_deformed(x0, 1.5, seed);
+    const ElementResponse r = three_layer_element(x0, x, s, Kinematics::nonlinear);
+    const double err = max_relative_tangent_error(x, r.tangent, [&](const NodeMatrix& y) {
+      return ElementVector(three_layer_element(x0, y, s, Kinematics::nonlinear, false).force);
+    });
+    EXPECT_LT(err, 1e-6) << "seed " << seed;
+  }
+}
+
+TEST(ElementTangent, EachLayerSeparately) {
+  const NodeMatrix x0 = curved_element();
+  const NodeMatrix x = randomly_deformed(x0, 1.0, 7);
+  for (int layer = 0; layer < 3; ++layer) {
+    ElementSection s;
+    if (layer == 0) s.inner_face = anisotropic_section().inner_face;
+    if (layer == 1) s.outer_face = anisotropic_section().outer_face;
+    if (layer == 2) {
+      s.core_shear_modulus = 1.0;
+      s.core_normal_modulus = 50.0;
+    }
+    const ElementResponse r = three_layer_element(x0, x, s, Kinematics::nonlinear);
+    const double err = max_relative_tangent_error(x, r.tangent, [&](const NodeMatrix& y) {
+      return ElementVector(three_layer_element(x0, y, s, Kinematics::nonlinear, false).force);
+    });
+    EXPECT_LT(err, 1e-6) << "layer " << layer;
+  }
+}
+
+TEST(ElementTangent, ForceIsGradientOfEnergy) {
+  const NodeMatrix x0 = curved_element();
+  const NodeMatrix x = randomly_deformed(x0, 1.0, 11);
+  const ElementSection s = anisotropic_section();
+  const ElementResponse r = three_layer_element(x0, x, s, Kinematics::nonlinear, false);
+  const double h = 1e-5;
+  ElementVector fd;
+  for (int j = 0; j < kElementDofs; ++j) {
+    NodeMatrix xp = x, xm = x;
+    xp(j % 3, j / 3) += h;
+    xm(j % 3, j / 3) -= h;
+    fd[j] = (three_layer_element(x0, xp, s, Kinematics::nonlinear, false).energy -
+             three_layer_element(x0, xm, s, Kinematics::nonlinear, false).energy) /
+            (2 * h);
+  }
+  EXPECT_LT((fd - r.force).norm() / r.force.norm(), 1e-7);
+}
+
+TEST(ElementTangent, LinearTheoryIsLinear) {
+  const NodeMatrix x0 = curved_element();
+  const ElementSection s = anisotropic_section();
+  const NodeMatrix x = randomly_deformed(x0, 1.0, 5);
+  const ElementResponse r = three_layer_element(x0, x, s, Kinematics::linear);
+  ElementVector u;
+  for (int k = 0; k < 8; ++k) u.segment<3>(3 * k) = x.col(k) - x0.col(k);
+  EXPECT_LT((r.tangent * u - r.force).norm() / r.force.norm(), 1e-12);
+  EXPECT_LT((r.tangent - r.tangent.transpose()).norm() / r.tangent.norm(), 1e-13);
+}
+
+TEST(ElementTangent, FollowerPressureMatchesFiniteDifferences) {
+  const NodeMatrix x0 = curved_element();
+  const NodeMatrix x = randomly_deformed(x0, 1.5, 3);
+  const PressureLoad p = follower_pressure(x0, x, 0.2, Kinematics::nonlinear);
+  const double err = max_relative_tangent_error(x, p.tangent, [&](const NodeMatrix& y) {
+    return ElementVector(follower_pressure(x0, y, 0.2, Kinematics::nonlinear, false).force);
+  });
+  EXPECT_LT(err, 1e-6);
+}
+
+}  // namespace
+}  // namespace tirefem
