@@ -17,6 +17,8 @@ struct SparseDirectSolver::Impl {
   bool use_lu = false;
   bool cholesky_analysed = false;
   bool lu_analysed = false;
+  bool lu_active = false;  // the last factorisation is the LU one
+  int cholesky_failures = 0;
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholesky;
   Eigen::UmfPackLU<SparseMatrix> lu;
 };
@@ -40,9 +42,13 @@ void SparseDirectSolver::factorize(const SparseMatrix& matrix) {
     s.cholesky.factorize(matrix);
     stats_.factorization_s += seconds_since(t0);
     ++stats_.factorizations;
-    if (s.cholesky.info() == Eigen::Success) return;
-    s.use_lu = true;  // not positive definite: LU from now on
-    stats_.used_lu = true;
+    if (s.cholesky.info() == Eigen::Success) {
+      s.cholesky_failures = 0;
+      s.lu_active = false;
+      return;
+    }
+    // Not positive definite: LU for this matrix; after two such matrices in a row, LU from now on.
+    if (++s.cholesky_failures >= 2) s.use_lu = true;
   }
   if (!s.lu_analysed) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -55,12 +61,13 @@ void SparseDirectSolver::factorize(const SparseMatrix& matrix) {
   stats_.factorization_s += seconds_since(t0);
   ++stats_.factorizations;
   stats_.used_lu = true;
+  s.lu_active = true;
   if (s.lu.info() != Eigen::Success) throw std::runtime_error("the tangent stiffness matrix is singular");
 }
 
 Eigen::VectorXd SparseDirectSolver::solve(const Eigen::VectorXd& rhs) {
   const auto t0 = std::chrono::steady_clock::now();
-  Eigen::VectorXd x = impl_->use_lu ? Eigen::VectorXd(impl_->lu.solve(rhs))
+  Eigen::VectorXd x = impl_->lu_active ? Eigen::VectorXd(impl_->lu.solve(rhs))
                                     : Eigen::VectorXd(impl_->cholesky.solve(rhs));
   stats_.solve_s += seconds_since(t0);
   ++stats_.solves;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace tirefem {
 
@@ -23,6 +24,7 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
     out.relative_residual = reference > 0 ? rn / reference : rn;
     if (!std::isfinite(rn)) return out;
     if (first_residual < 0) first_residual = rn;
+    out.residual_history.push_back(out.relative_residual);
     const bool residual_ok = out.relative_residual <= settings_.residual_tolerance;
     const bool increment_ok = it > 0 && increment_norm <= settings_.increment_tolerance * u.norm();
     if (residual_ok && (increment_ok || it == 0 ||
@@ -48,7 +50,7 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
 
 LoadPathResult follow_load_path(
     NewtonSolver& newton, Eigen::VectorXd& u, const LoadSteppingSettings& settings,
-    const std::function<void(const LoadStepRecord&, const Eigen::VectorXd&)>& on_step,
+    const Eigen::VectorXd* unit_predictor, const std::function<void(const LoadStepRecord&, const Eigen::VectorXd&)>& on_step,
     const ProgressSink& progress) {
   LoadPathResult result;
   double lambda = 0.0;
@@ -61,6 +63,8 @@ LoadPathResult follow_load_path(
     Eigen::VectorXd trial = u;
     if (lambda > previous_lambda)  // secant predictor from the last two converged states
       trial += (target - lambda) / (lambda - previous_lambda) * (u - previous);
+    else if (unit_predictor)
+      trial += (target - lambda) * *unit_predictor;
     const NewtonOutcome outcome = newton.solve(trial, target);
     if (!outcome.converged) {
       ++result.cutbacks;
@@ -78,8 +82,8 @@ LoadPathResult follow_load_path(
     const LoadStepRecord record{lambda, outcome.iterations, outcome.relative_residual};
     result.steps.push_back(record);
     if (progress)
-      progress(fmt::format("  load factor {:.4f}: {} Newton iterations, residual {:.2e}", lambda,
-                           outcome.iterations, outcome.relative_residual));
+      progress(fmt::format("  load factor {:.4f}: {} Newton iterations, residuals {:.1e}", lambda,
+                           outcome.iterations, fmt::join(outcome.residual_history, " ")));
     if (on_step) on_step(record, u);
     if (outcome.iterations < settings.easy_iterations)
       increment = std::min(1.5 * increment, settings.max_increment);

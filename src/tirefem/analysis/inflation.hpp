@@ -1,0 +1,36 @@
+#pragma once
+// Inflation of the tyre on its rim: the pressure is ramped from 0 to p by load stepping (Newton inside).
+#include "tirefem/case/case.hpp"
+#include "tirefem/element/strain_component.hpp"
+#include "tirefem/solver/newton.hpp"
+#include "tirefem/tyre/tyre_mesh.hpp"
+
+namespace tirefem {
+
+struct SolveCounters {
+  int load_steps = 0;
+  int cutbacks = 0;
+  int newton_iterations = 0;
+  int factorizations = 0;
+  int assemblies = 0;
+  double assembly_s = 0.0;
+  double analysis_s = 0.0;  // symbolic analysis of the sparse pattern
+  double factorization_s = 0.0;
+  double solve_s = 0.0;
+  double wall_s = 0.0;
+  bool used_lu = false;
+};
+
+struct InflationResult {
+  bool converged = false;
+  Kinematics kinematics = Kinematics::nonlinear;
+  double pressure = 0.0;
+  Eigen::VectorXd displacement;
+  std::vector<LoadStepRecord> steps;
+  SolveCounters counters;
+};
+
+InflationResult run_inflation(const TyreMesh& tyre_mesh, const InflationSettings& settings,
+                              const ProgressSink& progress = {});
+
+}  // namespace tirefem

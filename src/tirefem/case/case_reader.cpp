@@ -1,0 +1,571 @@
+#include "tirefem/case/case_reader.hpp"
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <sstream>
+
+#include "tirefem/element/section.hpp"
+#include "tirefem/tyre/meridian_profile.hpp"
+
+namespace tirefem {
+namespace {
+
+// ---------------------------------------------------------------------------------------------- paths
+std::string join(const std::string& path, std::string_view key) {
+  const bool bare = !key.empty() && std::all_of(key.begin(), key.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+  });
+  const std::string k = bare ? std::string(key) : fmt::format("\"{}\"", key);
+  return path.empty() ? k : path + "." + k;
+}
+std::string index(const std::string& path, std::size_t i) { return fmt::format("{}[{}]", path, i); }
+
+// Levenshtein distance, for "did you mean" on unknown keys.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diag = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string type_name(toml::node_type t) {
+  switch (t) {
+    case toml::node_type::table:
+      return "a table";
+    case toml::node_type::array:
+      return "an array";
+    case toml::node_type::string:
+      return "a string";
+    case toml::node_type::integer:
+      return "an integer";
+    case toml::node_type::floating_point:
+      return "a floating-point number";
+    case toml::node_type::boolean:
+      return "a boolean";
+    default:
+      return "a date/time";
+  }
+}
+
+// --------------------------------------------------------------------------------------- validation
+// Checks on values, shared by parse_case (which knows where each field is) and validate_case.
+class Checker {
+ public:
+  using Locate = std::function<std::string(const std::string& path)>;
+  explicit Checker(Locate locate) : locate_(std::move(locate)) {}
+
+  [[noreturn]] void fail(const std::string& path, const std::string& what) const {
+    throw CaseError(fmt::format("{}: {}: {}", locate_(path), path, what));
+  }
+  void finite(double v, const std::string& path) const {
+    if (!std::isfinite(v)) fail(path, fmt::format("must be a finite number (got {})", v));
+  }
+  void positive(double v, const std::string& path) const {
+    finite(v, path);
+    if (!(v > 0)) fail(path, fmt::format("must be > 0 (got {})", v));
+  }
+  void non_negative(double v, const std::string& path) const {
+    finite(v, path);
+    if (!(v >= 0)) fail(path, fmt::format("must be ≥ 0 (got {})", v));
+  }
+  void in_range(double v, double lo, double hi, const std::string& path) const {
+    finite(v, path);
+    if (!(v >= lo && v <= hi)) fail(path, fmt::format("must be in [{}, {}] (got {})", lo, hi, v));
+  }
+
+  void ply(const Ply& p, const std::string& path) const {
+    positive(p.cord_modulus, join(path, "cord_modulus"));
+    positive(p.cord_area, join(path, "cord_area"));
+    positive(p.ends_per_mm, join(path, "ends_per_mm"));
+    in_range(p.angle_deg, -90.0, 90.0, join(path, "angle"));
+    positive(p.thickness, join(path, "thickness"));
+    positive(p.rubber_modulus, join(path, "rubber_modulus"));
+    in_range(p.rubber_poisson, 0.0, 0.5, join(path, "rubber_poisson"));
+    in_range(p.cord_poisson, 0.0, 0.5, join(path, "cord_poisson"));
+    const double vc = p.cord_area * p.ends_per_mm / p.thickness;
+    if (!(vc < 1.0))
+      fail(path,
+           fmt::format("cord volume fraction cord_area × ends_per_mm / thickness must be < 1 (got {})", vc));
+  }
+
+  void stiffness(const Eigen::Matrix3d& a, const std::string& path) const {
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) finite(a(i, j), index(index(path, i), j));
+    const double tol = 1e-9 * a.cwiseAbs().maxCoeff();
+    for (int i = 0; i < 3; ++i)
+      for (int j = i + 1; j < 3; ++j)
+        if (std::abs(a(i, j) - a(j, i)) > tol)
+          fail(path, fmt::format("must be symmetric (A[{}][{}] = {} but A[{}][{}] = {})", i, j, a(i, j), j, i,
+                                 a(j, i)));
+    if (a.llt().info() != Eigen::Success || !(a.diagonal().minCoeff() > 0))
+      fail(path, "must be positive definite (N/mm, Voigt order [11, 22, 12])");
+  }
+
+  void face(const FaceLayup& f, const std::string& path) const {
+    if (f.plies.empty() && !f.direct_stiffness) fail(path, "a face needs at least one of plies, rubber or stiffness");
+    for (std::size_t i = 0; i < f.plies.size(); ++i) ply(f.plies[i], index(join(path, "plies"), i));
+    if (f.direct_stiffness) stiffness(*f.direct_stiffness, join(path, "stiffness"));
+  }
+
+  void table(const Table& t, const std::string& path, bool allow_zero) const {
+    if (t.s.empty()) fail(join(path, "s"), "must have at least one entry");
+    if (t.s.size() != t.value.size())
+      fail(join(path, "value"),
+           fmt::format("must have as many entries as s ({}; got {})", t.s.size(), t.value.size()));
+    for (std::size_t i = 0; i < t.s.size(); ++i) {
+      finite(t.s[i], index(join(path, "s"), i));
+      if (i > 0 && !(t.s[i] > t.s[i - 1]))
+        fail(index(join(path, "s"), i),
+             fmt::format("must be greater than s[{}] = {} (got {})", i - 1, t.s[i - 1], t.s[i]));
+      if (allow_zero)
+        non_negative(t.value[i], index(join(path, "value"), i));
+      else
+        positive(t.value[i], index(join(path, "value"), i));
+    }
+  }
+
+  // Returns the profile's arc length.
+  double profile(const std::vector<Eigen::Vector2d>& pts, const std::string& path) const {
+    if (pts.size() < 2) fail(path, fmt::format("needs at least 2 points [x, r] (got {})", pts.size()));
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      const std::string p = index(path, i);
+      finite(pts[i].x(), p);
+      finite(pts[i].y(), p);
+      if (!(pts[i].x() >= 0)) fail(p, fmt::format("x must be ≥ 0 (got {})", pts[i].x()));
+      if (!(pts[i].y() > 0)) fail(p, fmt::format("r must be > 0 (got {})", pts[i].y()));
+    }
+    if (pts[0].x() != 0.0)
+      fail(index(path, 0),
+           fmt::format("the profile must start on the equator, x = 0 (got x = {})", pts[0].x()));
+    for (std::size_t i = 1; i < pts.size(); ++i) {
+      const Eigen::Vector2d chord = pts[i] - pts[i - 1];
+      if (!(chord.norm() > 1e-6))
+        fail(index(path, i), fmt::format("same point as points[{}]: arc length must increase", i - 1));
+      if (i >= 2 && chord.dot(pts[i - 1] - pts[i - 2]) <= 0)
+        fail(
+            index(path, i),
+            fmt::format("the profile turns back at points[{}] (more than 90°): points out of order?", i - 1));
+    }
+    try {
+      return MeridianProfile(pts).length();
+    } catch (const std::exception& e) {
+      fail(path, e.what());
+    }
+  }
+
+  void run(const Case& c) const {
+    const TyreDescription& t = c.tyre;
+    const double length = profile(t.profile, "tyre.profile.points");
+    if (t.zones.empty()) fail("tyre.zones", "at least one zone is needed");
+    double previous = 0.0;
+    for (std::size_t k = 0; k < t.zones.size(); ++k) {
+      const Zone& z = t.zones[k];
+      const std::string p = index("tyre.zones", k);
+      finite(z.s_end, join(p, "s_end"));
+      if (!(z.s_end > previous))
+        fail(join(p, "s_end"),
+             k == 0 ? fmt::format("must be > 0 (got {})", z.s_end)
+                    : fmt::format("must be greater than the previous zone's s_end = {} (got {})", previous,
+                                  z.s_end));
+      previous = z.s_end;
+      face(z.inner, join(p, "inner"));
+      face(z.outer, join(p, "outer"));
+      positive(z.core_shear_modulus, join(p, "core_shear_modulus"));
+      positive(z.core_normal_modulus, join(p, "core_normal_modulus"));
+    }
+    if (std::abs(previous - length) > kZoneEndTolerance)
+      fail(join(index("tyre.zones", t.zones.size() - 1), "s_end"),
+           fmt::format("the last zone must end at the bead, s = {:.3f} mm, the profile's arc length (within "
+                       "{} mm; got {})",
+                       length, kZoneEndTolerance, previous));
+    table(t.interlayer_thickness, "tyre.interlayer.thickness", false);
+    table(t.tread_height, "tyre.tread.height", true);
+    in_range(t.tread_end_s, 0.0, length + kZoneEndTolerance, "tyre.tread.end_s");
+    positive(t.tread_stiffness, "tyre.tread.stiffness");
+    positive(t.tread_shear_modulus, "tyre.tread.shear_modulus");
+
+    if (c.mesh.circumferential_elements < 3)
+      fail("mesh.circumferential_elements",
+           fmt::format("must be ≥ 3 (got {})", c.mesh.circumferential_elements));
+    if (c.mesh.meridional_elements < static_cast<int>(t.zones.size()))
+      fail("mesh.meridional_elements", fmt::format("must be ≥ the number of zones, {} (got {})",
+                                                   t.zones.size(), c.mesh.meridional_elements));
+    finite(c.mesh.circumferential_refinement, "mesh.circumferential_refinement");
+    if (!(c.mesh.circumferential_refinement >= 1.0))
+      fail("mesh.circumferential_refinement",
+           fmt::format("must be ≥ 1 (got {})", c.mesh.circumferential_refinement));
+
+    if (c.inflation.enabled)
+      positive(c.inflation.pressure, "inflation.pressure");
+    else
+      non_negative(c.inflation.pressure, "inflation.pressure");
+    if (c.inflation.max_newton_iterations < 1)
+      fail("inflation.max_newton_iterations",
+           fmt::format("must be ≥ 1 (got {})", c.inflation.max_newton_iterations));
+    positive(c.inflation.residual_tolerance, "inflation.residual_tolerance");
+  }
+
+ private:
+  Locate locate_;
+};
+
+// ------------------------------------------------------------------------------------------ reading
+// Structure and types (missing fields, wrong types, unknown keys, unknown names); records where every
+// field is so that the value checks can point at it.
+class Reader {
+ public:
+  explicit Reader(std::string file)
+      : file_(std::move(file)), checker_([this](const std::string& p) { return locate(p); }) {}
+
+  const Checker& checker() const { return checker_; }
+
+  std::string locate(const std::string& path) const {
+    for (std::string p = path;;) {  // the field, else its nearest recorded parent
+      if (const auto it = positions_.find(p); it != positions_.end() && it->second.line > 0)
+        return fmt::format("{}:{}:{}", file_, it->second.line, it->second.column);
+      const auto cut = p.find_last_of(".[");
+      if (cut == std::string::npos || cut == 0) return file_;
+      p.resize(cut);
+    }
+  }
+  [[noreturn]] void fail(const std::string& path, const std::string& what) const {
+    checker_.fail(path, what);
+  }
+
+  const toml::node* get(const toml::table& t, const std::string& path, std::string_view key) {
+    const toml::node* n = t.get(key);
+    if (n) positions_[join(path, key)] = n->source().begin;
+    return n;
+  }
+  const toml::node& need(const toml::table& t, const std::string& path, std::string_view key,
+                         std::string_view expected) {
+    if (const toml::node* n = get(t, path, key)) return *n;
+    fail(join(path, key), fmt::format("missing; expected {}", expected));
+  }
+
+  const toml::table& table(const toml::node& n, const std::string& path,
+                           std::initializer_list<std::string_view> keys) {
+    positions_[path] = n.source().begin;
+    const toml::table* t = n.as_table();
+    if (!t) fail(path, fmt::format("must be a table (got {})", type_name(n.type())));
+    for (auto&& [k, v] : *t) {
+      if (std::find(keys.begin(), keys.end(), k.str()) != keys.end()) continue;
+      positions_[join(path, k.str())] = k.source().begin;
+      std::string msg = "unknown key; expected one of:";
+      std::string_view close;
+      for (std::string_view a : keys) {
+        msg += fmt::format(" {}", a);
+        if (edit_distance(a, k.str()) <= std::max<std::size_t>(2, a.size() / 4)) close = a;
+      }
+      if (!close.empty()) msg += fmt::format(" (did you mean '{}'?)", close);
+      fail(join(path, k.str()), msg);
+    }
+    return *t;
+  }
+  const toml::array& array(const toml::node& n, const std::string& path, std::string_view of) {
+    const toml::array* a = n.as_array();
+    if (!a) fail(path, fmt::format("must be an array of {} (got {})", of, type_name(n.type())));
+    for (std::size_t i = 0; i < a->size(); ++i) positions_[index(path, i)] = (*a)[i].source().begin;
+    return *a;
+  }
+  double number(const toml::node& n, const std::string& path, std::string_view unit) {
+    if (!n.is_number()) fail(path, fmt::format("must be a number{} (got {})", unit, type_name(n.type())));
+    return *n.value<double>();
+  }
+  int integer(const toml::node& n, const std::string& path) {
+    if (!n.is_integer()) fail(path, fmt::format("must be an integer (got {})", type_name(n.type())));
+    const int64_t v = n.as_integer()->get();
+    if (v < -1000000000 || v > 1000000000) fail(path, fmt::format("out of range (got {})", v));
+    return static_cast<int>(v);
+  }
+  bool boolean(const toml::node& n, const std::string& path) {
+    if (!n.is_boolean()) fail(path, fmt::format("must be true or false (got {})", type_name(n.type())));
+    return n.as_boolean()->get();
+  }
+  std::string string(const toml::node& n, const std::string& path) {
+    if (!n.is_string()) fail(path, fmt::format("must be a string (got {})", type_name(n.type())));
+    return n.as_string()->get();
+  }
+  std::vector<double> numbers(const toml::node& n, const std::string& path, std::string_view unit) {
+    std::vector<double> v;
+    const toml::array& a = array(n, path, "numbers");
+    for (std::size_t i = 0; i < a.size(); ++i) v.push_back(number(a[i], index(path, i), unit));
+    return v;
+  }
+  // Optional fields: keep the default when absent.
+  void opt_number(const toml::table& t, const std::string& path, std::string_view key, double& out,
+                  std::string_view unit) {
+    if (const toml::node* n = get(t, path, key)) out = number(*n, join(path, key), unit);
+  }
+  void opt_integer(const toml::table& t, const std::string& path, std::string_view key, int& out) {
+    if (const toml::node* n = get(t, path, key)) out = integer(*n, join(path, key));
+  }
+  void opt_bool(const toml::table& t, const std::string& path, std::string_view key, bool& out) {
+    if (const toml::node* n = get(t, path, key)) out = boolean(*n, join(path, key));
+  }
+  double req_number(const toml::table& t, const std::string& path, std::string_view key,
+                    std::string_view unit) {
+    return number(need(t, path, key, fmt::format("a number{}", unit)), join(path, key), unit);
+  }
+
+  CordRubberRule rule(const toml::node& n, const std::string& path) {
+    const std::string s = string(n, path);
+    if (s == "halpin_tsai") return CordRubberRule::halpin_tsai;
+    if (s == "gough_tangorra") return CordRubberRule::gough_tangorra;
+    fail(path, fmt::format("must be \"halpin_tsai\" or \"gough_tangorra\" (got \"{}\")", s));
+  }
+
+  Ply ply(const toml::node& n, const std::string& path, std::string name) {
+    const toml::table& t = table(n, path,
+                                 {"description", "cord_modulus", "cord_area", "ends_per_mm", "angle",
+                                  "thickness", "rubber_modulus", "rubber_poisson", "cord_poisson"});
+    if (const toml::node* d = get(t, path, "description")) string(*d, join(path, "description"));
+    Ply p;
+    p.name = std::move(name);
+    p.cord_modulus = req_number(t, path, "cord_modulus", " (MPa)");
+    p.cord_area = req_number(t, path, "cord_area", " (mm², one cord)");
+    p.ends_per_mm = req_number(t, path, "ends_per_mm", " (cords per mm)");
+    p.angle_deg = req_number(t, path, "angle", " (degrees to the circumferential direction, 90 = radial)");
+    p.thickness = req_number(t, path, "thickness", " (mm)");
+    p.rubber_modulus = req_number(t, path, "rubber_modulus", " (MPa)");
+    opt_number(t, path, "rubber_poisson", p.rubber_poisson, "");
+    opt_number(t, path, "cord_poisson", p.cord_poisson, "");
+    checker_.ply(p, path);
+    return p;
+  }
+
+  FaceLayup face(const toml::node& n, const std::string& path, const std::map<std::string, Ply>& plies,
+                 CordRubberRule default_rule) {
+    const toml::table& t = table(n, path, {"plies", "rubber", "stiffness", "rule"});
+    FaceLayup f;
+    f.rule = default_rule;
+    if (const toml::node* r = get(t, path, "rule")) f.rule = rule(*r, join(path, "rule"));
+    if (const toml::node* pl = get(t, path, "plies")) {
+      const std::string pp = join(path, "plies");
+      const toml::array& a = array(*pl, pp, "ply names or ply tables");
+      for (std::size_t i = 0; i < a.size(); ++i) {
+        if (a[i].is_table()) {
+          f.plies.push_back(ply(a[i], index(pp, i), index(pp, i)));
+          continue;
+        }
+        const std::string name = string(a[i], index(pp, i));
+        const auto it = plies.find(name);
+        if (it == plies.end()) {
+          std::string known;
+          for (const auto& [k, v] : plies) known += (known.empty() ? "" : ", ") + k;
+          fail(index(pp, i), fmt::format("unknown ply \"{}\" (defined in [tyre.plies]: {})", name,
+                                         known.empty() ? "none" : known));
+        }
+        f.plies.push_back(it->second);
+      }
+    }
+    Eigen::Matrix3d direct = Eigen::Matrix3d::Zero();
+    bool has_direct = false;
+    if (const toml::node* r = get(t, path, "rubber")) {  // one layer, or an array of layers
+      const std::string rp = join(path, "rubber");
+      std::vector<std::pair<const toml::node*, std::string>> layers;
+      if (r->is_array()) {
+        const toml::array& a = array(*r, rp, "rubber layers { E, nu, thickness }");
+        for (std::size_t i = 0; i < a.size(); ++i) layers.emplace_back(&a[i], index(rp, i));
+      } else {
+        layers.emplace_back(r, rp);
+      }
+      for (const auto& [node, lp] : layers) {
+        const toml::table& lt = table(*node, lp, {"E", "nu", "thickness"});
+        const double e = req_number(lt, lp, "E", " (MPa)");
+        double nu = 0.49;
+        opt_number(lt, lp, "nu", nu, "");
+        const double h = req_number(lt, lp, "thickness", " (mm)");
+        checker_.positive(e, join(lp, "E"));
+        checker_.in_range(nu, 0.0, 0.5, join(lp, "nu"));
+        checker_.positive(h, join(lp, "thickness"));
+        direct += isotropic_membrane(e, nu, h);
+        has_direct = true;
+      }
+    }
+    if (const toml::node* s = get(t, path, "stiffness")) {
+      const std::string sp = join(path, "stiffness");
+      const toml::array& rows = array(*s, sp, "3 rows of 3 numbers (N/mm)");
+      if (rows.size() != 3) fail(sp, fmt::format("must have 3 rows of 3 numbers (got {} rows)", rows.size()));
+      Eigen::Matrix3d a;
+      for (int i = 0; i < 3; ++i) {
+        const std::vector<double> row = numbers(rows[i], index(sp, i), " (N/mm)");
+        if (row.size() != 3) fail(index(sp, i), fmt::format("must have 3 numbers (got {})", row.size()));
+        for (int j = 0; j < 3; ++j) a(i, j) = row[j];
+      }
+      checker_.stiffness(a, sp);
+      direct += a;
+      has_direct = true;
+    }
+    if (has_direct) f.direct_stiffness = direct;
+    if (f.plies.empty() && !has_direct) fail(path, "a face needs at least one of plies, rubber or stiffness");
+    return f;
+  }
+
+  Table table_in_s(const toml::node& n, const std::string& path, std::string_view unit) {
+    if (n.is_number()) return Table::constant(number(n, path, unit));
+    if (!n.is_table())
+      fail(path, fmt::format("must be a number or a table {{ s = [...], value = [...] }} (got {})",
+                             type_name(n.type())));
+    const toml::table& t = table(n, path, {"s", "value"});
+    Table tab;
+    tab.s = numbers(need(t, path, "s", "an array of arc lengths (mm)"), join(path, "s"), " (mm)");
+    tab.value = numbers(need(t, path, "value", "an array of numbers"), join(path, "value"), unit);
+    return tab;
+  }
+
+  TyreDescription tyre(const toml::node& n, const std::string& path) {
+    const toml::table& t =
+        table(n, path, {"name", "cord_rubber_rule", "profile", "plies", "zones", "interlayer", "tread"});
+    TyreDescription d;
+    if (const toml::node* v = get(t, path, "name")) d.name = string(*v, join(path, "name"));
+    CordRubberRule default_rule = CordRubberRule::halpin_tsai;
+    if (const toml::node* v = get(t, path, "cord_rubber_rule"))
+      default_rule = rule(*v, join(path, "cord_rubber_rule"));
+
+    const std::string pp = join(path, "profile");
+    const toml::table& prof =
+        table(need(t, path, "profile", "a table with points = [[x, r], ...]"), pp, {"points"});
+    const std::string ptp = join(pp, "points");
+    const toml::array& pts =
+        array(need(prof, pp, "points", "an array of [x, r] pairs (mm)"), ptp, "[x, r] pairs (mm)");
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      const std::vector<double> xy = numbers(pts[i], index(ptp, i), " (mm)");
+      if (xy.size() != 2)
+        fail(index(ptp, i), fmt::format("must be a pair [x, r] (got {} numbers)", xy.size()));
+      d.profile.emplace_back(xy[0], xy[1]);
+    }
+
+    std::map<std::string, Ply> plies;
+    if (const toml::node* pl = get(t, path, "plies")) {
+      const std::string plp = join(path, "plies");
+      positions_[plp] = pl->source().begin;
+      const toml::table* pt = pl->as_table();
+      if (!pt) fail(plp, fmt::format("must be a table of named plies (got {})", type_name(pl->type())));
+      for (auto&& [k, v] : *pt) {
+        const std::string name(k.str());
+        plies.emplace(name, ply(v, join(plp, name), name));
+      }
+    }
+
+    const std::string zp = join(path, "zones");
+    const toml::array& zones =
+        array(need(t, path, "zones", "an array of tables [[tyre.zones]]"), zp, "tables [[tyre.zones]]");
+    for (std::size_t k = 0; k < zones.size(); ++k) {
+      const std::string p = index(zp, k);
+      const toml::table& zt = table(
+          zones[k], p, {"name", "s_end", "inner", "outer", "core_shear_modulus", "core_normal_modulus"});
+      Zone z;
+      z.name = fmt::format("zone {}", k);
+      if (const toml::node* v = get(zt, p, "name")) z.name = string(*v, join(p, "name"));
+      z.s_end = req_number(zt, p, "s_end", " (mm of arc length from the equator)");
+      z.inner =
+          face(need(zt, p, "inner", "a face table { plies = [...] }"), join(p, "inner"), plies, default_rule);
+      z.outer = face(need(zt, p, "outer", "a face table { plies, rubber or stiffness }"), join(p, "outer"),
+                     plies, default_rule);
+      z.core_shear_modulus = req_number(zt, p, "core_shear_modulus", " (MPa)");
+      z.core_normal_modulus = req_number(zt, p, "core_normal_modulus", " (MPa)");
+      d.zones.push_back(std::move(z));
+    }
+
+    const std::string ip = join(path, "interlayer");
+    const toml::table& il = table(need(t, path, "interlayer", "a table with thickness"), ip, {"thickness"});
+    d.interlayer_thickness =
+        table_in_s(need(il, ip, "thickness", "a number or { s = [...], value = [...] } (mm)"),
+                   join(ip, "thickness"), " (mm)");
+
+    const std::string tp = join(path, "tread");
+    const toml::table& tr = table(need(t, path, "tread", "a table [tyre.tread]"), tp,
+                                  {"height", "end_s", "stiffness", "shear_modulus"});
+    d.tread_height = table_in_s(need(tr, tp, "height", "a number or { s = [...], value = [...] } (mm)"),
+                                join(tp, "height"), " (mm)");
+    d.tread_end_s = req_number(tr, tp, "end_s", " (mm of arc length from the equator)");
+    d.tread_stiffness = req_number(tr, tp, "stiffness", " (N/mm³)");
+    d.tread_shear_modulus = req_number(tr, tp, "shear_modulus", " (MPa)");
+    return d;
+  }
+
+  Case read(const toml::table& root) {
+    const toml::table& r = table(root, "", {"title", "tyre", "mesh", "inflation"});
+    Case c;
+    if (const toml::node* v = get(r, "", "title")) c.title = string(*v, "title");
+    c.tyre = tyre(need(r, "", "tyre", "a table [tyre]"), "tyre");
+    if (c.title.empty()) c.title = c.tyre.name;
+    if (const toml::node* v = get(r, "", "mesh")) {
+      const toml::table& m = table(
+          *v, "mesh",
+          {"circumferential_elements", "meridional_elements", "half_model", "circumferential_refinement"});
+      opt_integer(m, "mesh", "circumferential_elements", c.mesh.circumferential_elements);
+      opt_integer(m, "mesh", "meridional_elements", c.mesh.meridional_elements);
+      opt_bool(m, "mesh", "half_model", c.mesh.half_model);
+      opt_number(m, "mesh", "circumferential_refinement", c.mesh.circumferential_refinement, "");
+    }
+    if (const toml::node* v = get(r, "", "inflation")) {
+      const toml::table& m = table(
+          *v, "inflation", {"enabled", "pressure", "linear", "max_newton_iterations", "residual_tolerance"});
+      opt_bool(m, "inflation", "enabled", c.inflation.enabled);
+      opt_number(m, "inflation", "pressure", c.inflation.pressure, " (MPa)");
+      opt_bool(m, "inflation", "linear", c.inflation.linear);
+      opt_integer(m, "inflation", "max_newton_iterations", c.inflation.max_newton_iterations);
+      opt_number(m, "inflation", "residual_tolerance", c.inflation.residual_tolerance, "");
+    }
+    return c;
+  }
+
+ private:
+  std::string file_;
+  std::map<std::string, toml::source_position> positions_;
+  Checker checker_;
+};
+
+// The last zone ends at the bead: snap its end to the profile's arc length (validated to be within 1 mm).
+void snap_last_zone(Case& c) { c.tyre.zones.back().s_end = MeridianProfile(c.tyre.profile).length(); }
+
+}  // namespace
+
+Case parse_case(std::string_view toml_text, const std::filesystem::path& name_for_messages) {
+  const std::string file = name_for_messages.string();
+  toml::table root;
+  try {
+    root = toml::parse(toml_text, file);
+  } catch (const toml::parse_error& e) {
+    const auto& b = e.source().begin;
+    throw CaseError(fmt::format("{}:{}:{}: TOML syntax error: {}", file, b.line, b.column, e.description()));
+  }
+  Reader reader(file);
+  Case c = reader.read(root);
+  c.source = name_for_messages;
+  reader.checker().run(c);
+  snap_last_zone(c);
+  return c;
+}
+
+Case read_case(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw CaseError(fmt::format("{}: cannot open the case file", file.string()));
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_case(text.str(), file);
+}
+
+void validate_case(const Case& c) {
+  const std::string file = c.source.empty() ? std::string("case") : c.source.string();
+  Checker([&file](const std::string&) { return file; }).run(c);
+}
+
+}  // namespace tirefem

@@ -1,0 +1,51 @@
+#pragma once
+// The tyre as a mesh of three-layer shell elements: a surface of revolution about the wheel axis
+// (parallel to x, at height axis_z above the road), u = meridian arc length s, v = angle φ.
+//
+// Meridional stations: the meridian is cut at the zone ends and at the tread edge, and the elements are
+// shared out over these pieces in proportion to their length (at least one each, largest remainders get
+// the rest), uniform within a piece. So every element lies in one zone and on one side of the tread edge.
+// Circumferential stations: circumferential_stations(n, refinement), refined around φ = 0 (the patch).
+// Half model: s from 0 (equator) to L (bead). Full model: s from −L to L on the mirrored profile, with
+// twice meridional_elements elements.
+#include <vector>
+
+#include "tirefem/case/case.hpp"
+#include "tirefem/element/section.hpp"
+#include "tirefem/mesh/shell_mesh.hpp"
+#include "tirefem/tyre/meridian_profile.hpp"
+
+namespace tirefem {
+
+struct TyreMesh {
+  ShellMesh mesh;  // inner face = carcass line, outer face at h(s) along the normal (−r', x')
+  std::vector<ElementSection> sections;  // per element
+  std::vector<int> element_zone;         // per element: index into TyreDescription::zones
+  std::vector<double> element_s;         // per element: s of its centre (negative on the mirror side)
+  std::vector<int> pressure_elements;    // elements loaded by the inflation pressure (all)
+  // Bead: all 6 DOFs of each bead node pair. Half model also: the x displacement of the inner and the
+  // outer node of each equator node pair (symmetry). Sorted, unique.
+  std::vector<int> fixed_dofs;
+  // Height of the wheel axis: the outer radius of the tread surface at the equator, r(0) + h(0) + hp(0),
+  // so the undeformed tyre touches z = 0 at φ = 0.
+  double axis_z = 0.0;
+  MeridianProfile profile;  // the profile the mesh was built on (mirrored in the full model)
+  bool half_model = true;
+
+  // Meridian arc length of a node pair.
+  double pair_s(int pair) const { return mesh.u_values[pair % mesh.u_nodes()]; }
+};
+
+// Throws std::invalid_argument on inconsistent input (validate_case() reports it with field names first).
+TyreMesh build_tyre_mesh(const TyreDescription& tyre, const MeshSettings& settings);
+
+// Meridional stations of the half model, 0 … L (see above). `breaks` are the interior cut points.
+std::vector<double> meridional_stations(double length, std::vector<double> breaks, int elements);
+
+// Index of the zone containing |s| (the last zone also takes anything beyond its end).
+int zone_at(const TyreDescription& tyre, double s);
+
+// Tread height hp at |s|: the table value up to the tread edge, 0 beyond it.
+double tread_height_at(const TyreDescription& tyre, double s);
+
+}  // namespace tirefem
