@@ -7,6 +7,7 @@
 #include <memory>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -209,7 +210,9 @@ inline Eigen::VectorXd solve_linear(NonlinearProblem& problem, double tolerance 
   NewtonSolver newton(problem, settings);
   Eigen::VectorXd u = Eigen::VectorXd::Zero(problem.dofs().dof_count());
   const NewtonOutcome out = newton.solve(u, 1.0);
-  if (!out.converged) throw std::runtime_error("solve_linear: no convergence");
+  if (!out.converged)
+    throw std::runtime_error("solve_linear: no convergence, residual " + std::to_string(out.relative_residual) +
+                             " after " + std::to_string(out.iterations) + " solves");
   return u;
 }
 

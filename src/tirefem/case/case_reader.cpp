@@ -117,7 +117,8 @@ class Checker {
   }
 
   void face(const FaceLayup& f, const std::string& path) const {
-    if (f.plies.empty() && !f.direct_stiffness) fail(path, "a face needs at least one of plies, rubber or stiffness");
+    if (f.plies.empty() && !f.direct_stiffness)
+      fail(path, "a face needs at least one of plies, rubber or stiffness");
     for (std::size_t i = 0; i < f.plies.size(); ++i) ply(f.plies[i], index(join(path, "plies"), i));
     if (f.direct_stiffness) stiffness(*f.direct_stiffness, join(path, "stiffness"));
   }
@@ -268,9 +269,11 @@ class Reader {
       positions_[join(path, k.str())] = k.source().begin;
       std::string msg = "unknown key; expected one of:";
       std::string_view close;
+      std::size_t best = std::string_view::npos;
       for (std::string_view a : keys) {
         msg += fmt::format(" {}", a);
-        if (edit_distance(a, k.str()) <= std::max<std::size_t>(2, a.size() / 4)) close = a;
+        const std::size_t d = edit_distance(a, k.str());
+        if (d <= std::max<std::size_t>(2, a.size() / 4) && d < best) close = a, best = d;
       }
       if (!close.empty()) msg += fmt::format(" (did you mean '{}'?)", close);
       fail(join(path, k.str()), msg);
