@@ -17,6 +17,19 @@
 namespace tirefem::verification {
 namespace {
 
+// The residual of these thin, stiff shells has a round-off floor above the solver's default 1e-8 of
+// the applied load: nodal positions X + u carry an absolute error ε|X|, which the membrane and
+// through-thickness stiffnesses (E t / h, E / d per unit area) turn into nodal forces of 1e-7 to 1e-5
+// of the load. Newton then stalls there; the displacements are converged long before (the stall is
+// noise in the stiffest modes). 1e-6 / 1e-4 are above the floors seen (2e-7 nonlinear cantilever,
+// 4e-5 hemisphere) and far below what would change a displacement in the reported digits.
+NewtonSettings benchmark_newton_settings() {
+  NewtonSettings s;
+  s.residual_tolerance = 1e-6;
+  return s;
+}
+constexpr double kLinearResidualTolerance = 1e-4;
+
 // ---- Scordelis–Lo roof -----------------------------------------------------------------------------
 // R = 25, L = 50, t = 0.25, E = 4.32e8, ν = 0, 40° half-angle, gravity 90 per unit area, rigid end
 // diaphragms (u_y = u_z = 0, x free). Quarter model: x ∈ [0, 25] (x = 25 midspan symmetry),
@@ -40,19 +53,21 @@ double scordelis_lo(int n) {
   forms.push_back(std::make_unique<ShellInternalForce>(mesh, sections, Kinematics::linear));
   forms.push_back(std::make_unique<NodalLoadForm>(f));
   NonlinearProblem problem(dofs, std::move(forms));
-  const Eigen::VectorXd u = solve_linear(problem, 1e-4);
+  const Eigen::VectorXd u = solve_linear(problem, kLinearResidualTolerance);
   return -mid_displacement(u, mesh.pair_index(n, n)).z();  // midspan of the free edge, downwards
 }
 
 TEST(ShellBenchmarks, ScordelisLoRoof) {
   constexpr double reference = 0.3024;
-  const double w8 = scordelis_lo(8), w16 = scordelis_lo(16);
-  std::printf("  Scordelis-Lo: 8x8 %.5f (%.4f), 16x16 %.5f (%.4f); reference %.4f\n", w8, w8 / reference, w16,
-              w16 / reference, reference);
+  const double w8 = scordelis_lo(8), w16 = scordelis_lo(16), w32 = scordelis_lo(32);
+  std::printf("  Scordelis-Lo: 8x8 %.5f (%.4f), 16x16 %.5f (%.4f), 32x32 %.5f (%.4f); reference %.4f\n", w8,
+              w8 / reference, w16, w16 / reference, w32, w32 / reference, reference);
   EXPECT_NEAR(w16, reference, 0.03 * reference)
       << "Scordelis-Lo roof, 16x16 quarter, linear: 0.3024 (MacNeal & Harder 1985), tolerance 3%";
-  EXPECT_LT(std::abs(w16 - reference), std::abs(w8 - reference) + 1e-4 * reference)
-      << "Scordelis-Lo: the 16x16 mesh must be at least as close to 0.3024 as 8x8 (convergence)";
+  EXPECT_NEAR(w32, reference, 0.03 * reference) << "Scordelis-Lo roof, 32x32 quarter, tolerance 3%";
+  EXPECT_LT(std::abs(w16 - reference), std::abs(w8 - reference))
+      << "Scordelis-Lo: 16x16 must be closer to 0.3024 than 8x8 (convergence)";
+  EXPECT_LT(std::abs(w32 - w16), std::abs(w16 - w8)) << "Scordelis-Lo: successive changes must shrink";
 }
 
 // ---- pinched hemisphere with an 18° hole ---------------------------------------------------------
@@ -83,21 +98,24 @@ HemisphereResult pinched_hemisphere(int n) {
   forms.push_back(std::make_unique<ShellInternalForce>(mesh, sections, Kinematics::linear));
   forms.push_back(std::make_unique<NodalLoadForm>(f));
   NonlinearProblem problem(dofs, std::move(forms));
-  const Eigen::VectorXd u = solve_linear(problem, 1e-4);
+  const Eigen::VectorXd u = solve_linear(problem, kLinearResidualTolerance);
   return {-mid_displacement(u, a).z(), -mid_displacement(u, b).y()};
 }
 
 TEST(ShellBenchmarks, PinchedHemisphere) {
   constexpr double reference = 0.094;
-  const HemisphereResult r8 = pinched_hemisphere(8), r16 = pinched_hemisphere(16);
-  std::printf("  pinched hemisphere: 8x8 %.5f / %.5f (%.4f), 16x16 %.5f / %.5f (%.4f); reference %.3f\n",
-              r8.outward, r8.inward, r8.outward / reference, r16.outward, r16.inward, r16.outward / reference,
-              reference);
+  // Coarse meshes are not monotone (4x4 0.0963, 8x8 0.0934, 12x12 0.0930); from 12x12 on the answer
+  // rises steadily towards the reference (16x16 0.0930, 32x32 0.0933, 48x48 0.0934).
+  const HemisphereResult r8 = pinched_hemisphere(8), r16 = pinched_hemisphere(16), r32 = pinched_hemisphere(32);
+  std::printf("  pinched hemisphere: 8x8 %.5f (%.4f), 16x16 %.5f / %.5f (%.4f), 32x32 %.5f (%.4f); reference %.3f\n",
+              r8.outward, r8.outward / reference, r16.outward, r16.inward, r16.outward / reference, r32.outward,
+              r32.outward / reference, reference);
   EXPECT_NEAR(r16.outward, reference, 0.03 * reference)
       << "pinched hemisphere, 16x16 quarter, linear: 0.094 (MacNeal & Harder 1985), tolerance 3%";
-  EXPECT_NEAR(r16.inward, reference, 0.03 * reference) << "pinched hemisphere, inward load point";
-  EXPECT_LT(std::abs(r16.outward - reference), std::abs(r8.outward - reference) + 1e-4 * reference)
-      << "pinched hemisphere: 16x16 must be at least as close to 0.094 as 8x8 (convergence)";
+  EXPECT_NEAR(r16.inward, reference, 0.03 * reference) << "pinched hemisphere, inward load point, tolerance 3%";
+  EXPECT_NEAR(r32.outward, reference, 0.03 * reference) << "pinched hemisphere, 32x32 quarter, tolerance 3%";
+  EXPECT_LT(std::abs(r32.outward - reference), std::abs(r16.outward - reference))
+      << "pinched hemisphere: 32x32 must be closer to 0.094 than 16x16 (convergence)";
 }
 
 // ---- nonlinear cantilevers (Sze, Liu & Lo 2004) -----------------------------------------------------
@@ -141,14 +159,12 @@ TEST(ShellBenchmarks, SzeCantileverEndShear) {
   forms.push_back(std::make_unique<ShellInternalForce>(mesh, m->sections, Kinematics::nonlinear));
   forms.push_back(std::make_unique<NodalLoadForm>(f));
   NonlinearProblem problem(dofs, std::move(forms));
-  NewtonSettings settings; settings.residual_tolerance = 1e-6;
-  NewtonSolver newton(problem, settings);
+  NewtonSolver newton(problem, benchmark_newton_settings());
   Eigen::VectorXd u = Eigen::VectorXd::Zero(mesh.dof_count());
   size_t next = 0;
   for (int k = 1; k <= 40; ++k) {  // load steps of P_max/40 up to each tabulated level
     const double level = k / 40.0;
     const NewtonOutcome out = newton.solve(u, level);
-    std::printf("DBG %g it %d res %g\n", level, out.iterations, out.relative_residual);
     ASSERT_TRUE(out.converged) << "Sze cantilever: Newton failed at P/Pmax = " << level;
     if (next < table.size() && std::abs(level - table[next].level) < 1e-12) {
       const Eigen::Vector3d tip = mean_mid_displacement(u, m->tip);
@@ -184,7 +200,7 @@ TEST(ShellBenchmarks, CantileverRolledUpByEndMoment) {
   forms.push_back(std::make_unique<EndMomentForm>(mesh, m->tip, std::vector<double>(m->tip.size(), m_max / m->tip.size()),
                                                   Eigen::Vector3d(0, -1, 0)));
   NonlinearProblem problem(dofs, std::move(forms));
-  NewtonSolver newton(problem, NewtonSettings{});
+  NewtonSolver newton(problem, benchmark_newton_settings());
   Eigen::VectorXd u = Eigen::VectorXd::Zero(mesh.dof_count());
   const int steps = 40;
   for (int k = 1; k <= steps; ++k) {

@@ -267,13 +267,13 @@ class Reader {
     for (auto&& [k, v] : *t) {
       if (std::find(keys.begin(), keys.end(), k.str()) != keys.end()) continue;
       positions_[join(path, k.str())] = k.source().begin;
-      std::string msg = "unknown key; expected one of:";
+      std::string msg = "unknown key; expected one of";
       std::string_view close;
       std::size_t best = std::string_view::npos;
       for (std::string_view a : keys) {
-        msg += fmt::format(" {}", a);
+        msg += fmt::format("{} {}", a == *keys.begin() ? ":" : ",", a);
         const std::size_t d = edit_distance(a, k.str());
-        if (d <= std::max<std::size_t>(2, a.size() / 4) && d < best) close = a, best = d;
+        if (d < a.size() && d <= std::max<std::size_t>(2, a.size() / 4) && d < best) close = a, best = d;
       }
       if (!close.empty()) msg += fmt::format(" (did you mean '{}'?)", close);
       fail(join(path, k.str()), msg);
