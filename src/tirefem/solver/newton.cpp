@@ -39,8 +39,18 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
     } catch (const std::runtime_error&) {
       return out;
     }
-    const Eigen::VectorXd du = linear_.solve(-r);
+    Eigen::VectorXd du = linear_.solve(-r);
     if (!du.allFinite()) return out;
+    // Line search: far from the solution (an unstressed membrane under follower pressure) a full
+    // Newton step can overshoot by orders of magnitude; halve it while the residual grows.
+    for (int halving = 0; halving < settings_.max_line_search_halvings; ++halving) {
+      Eigen::VectorXd trial = u;
+      dofs.scatter_add(du, trial);
+      problem_.evaluate(trial, load_factor, false);
+      const double trial_norm = dofs.gather(problem_.system().residual()).norm();
+      if (std::isfinite(trial_norm) && trial_norm < rn) break;
+      du *= 0.5;
+    }
     dofs.scatter_add(du, u);
     increment_norm = du.norm();
     ++out.iterations;

@@ -14,6 +14,9 @@ struct NewtonSettings {
   double residual_tolerance = 1e-8;   // ‖R_free‖ ≤ tol · λ‖F‖ (‖F‖ = size of the full applied load)
   double increment_tolerance = 1e-7;  // ‖Δu‖ ≤ tol · ‖u‖
   int max_iterations = 25;
+  // Backtracking on ‖R‖: the step is halved (at most this many times) while it increases the residual.
+  // Off by default: on the inflated tyre it saved 2 of 10 factorisations but cost 15 more assemblies.
+  int max_line_search_halvings = 0;
 };
 
 struct NewtonOutcome {
