@@ -12,12 +12,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Run {
+struct CliRun {
   int exit_code;
   std::string output;
 };
 
-Run run_cli(const std::string& args) {
+CliRun run_cli(const std::string& args) {
   const fs::path log = fs::temp_directory_path() / ("tirefem_cli_" + std::to_string(::getpid()) + ".log");
   const std::string cmd = std::string(TIREFEM_CLI) + " " + args + " > " + log.string() + " 2>&1";
   const int status = std::system(cmd.c_str());
@@ -44,14 +44,14 @@ std::string read_text(const fs::path& p) {
 }
 
 TEST(Cli, CheckAcceptsTheExample) {
-  const Run r = run_cli("check " + kExample);
+  const CliRun r = run_cli("check " + kExample);
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("ok"), std::string::npos) << r.output;
 }
 
 TEST(Cli, RunWritesAllResultsOfTheExample) {
   const fs::path out = scratch("example");
-  const Run r = run_cli("run " + kExample + " --out " + out.string());
+  const CliRun r = run_cli("run " + kExample + " --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   for (const char* f : {"summary.json", "inflation_meridian.csv", "inflation.vtu",
                         "plots/inflation_cord_tension.gp", "plots/inflation_cross_section.gp"})
@@ -74,18 +74,18 @@ TEST(Cli, BadCaseNamesTheFieldAndWritesNothing) {
   const fs::path bad = scratch("bad.toml");
   std::ofstream(bad) << text;
   const fs::path out = scratch("bad_out");
-  const Run r = run_cli("run " + bad.string() + " --out " + out.string());
+  const CliRun r = run_cli("run " + bad.string() + " --out " + out.string());
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("circumferential_elements"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(out));
-  const Run c = run_cli("check " + bad.string());
+  const CliRun c = run_cli("check " + bad.string());
   EXPECT_NE(c.exit_code, 0);
   EXPECT_NE(c.output.find("circumferential_elements"), std::string::npos) << c.output;
   fs::remove_all(out.parent_path());
 }
 
 TEST(Cli, MissingFileIsAnError) {
-  const Run r = run_cli("run /nonexistent/case.toml");
+  const CliRun r = run_cli("run /nonexistent/case.toml");
   EXPECT_NE(r.exit_code, 0);
 }
 

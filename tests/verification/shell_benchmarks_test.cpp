@@ -3,9 +3,10 @@
 // Linear: Scordelis–Lo roof (0.3024) and the pinched hemisphere with an 18° hole (0.094), MacNeal &
 // Harder (1985). Nonlinear: Sze, Liu & Lo (2004) cantilever under end shear (table of 5 load levels)
 // and the cantilever rolled up into a full circle by an end moment (exact elastica).
-// Tolerances: "a few %", as the references themselves scatter by about 1–2% (0.3024 vs 0.3086 for the
-// roof depending on the shell theory; 0.094 vs 0.0924 for the hemisphere; Sze's table is an S4R 16 × 1
-// solution); each assertion names its value.
+// Tolerances: 3% ("a few %"): the references are themselves ~1–2% uncertain (the roof's deep-shell
+// value is 0.3086, while 0.3024 is what converged shear-deformable elements give; 0.094 is quoted to two
+// digits; Sze's table is an Abaqus S4R 16 × 1 solution); each assertion names its value. The roll-up
+// is compared with the exact elastica to 2% of L.
 #include <cstdio>
 
 #include <gtest/gtest.h>
@@ -174,8 +175,7 @@ TEST(ShellBenchmarks, SzeCantileverEndShear) {
                   100 * (tip.z() / row.w - 1));
       EXPECT_NEAR(tip.z(), row.w, 0.03 * row.w)
           << "Sze cantilever w at P/Pmax = " << row.level << " (Sze, Liu & Lo 2004), tolerance 3%";
-      // −u is tiny at the first level (0.026 = 0.26% of L): there 3% of w bounds its error.
-      EXPECT_NEAR(-tip.x(), row.minus_u, 0.03 * std::max(row.minus_u, row.w))
+      EXPECT_NEAR(-tip.x(), row.minus_u, 0.03 * row.minus_u)
           << "Sze cantilever -u at P/Pmax = " << row.level << " (Sze, Liu & Lo 2004), tolerance 3%";
     }
   }

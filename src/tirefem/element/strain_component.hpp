@@ -41,17 +41,21 @@ inline StrainComponent bilinear_strain(const NodeWeights& alpha, const NodeWeigh
                                        Kinematics kinematics) {
   const Eigen::Vector3d A = reference * alpha;
   const Eigen::Vector3d B = reference * beta;
+  // The value is formed from the displacements, ½(A·u_β + u_α·B + u_α·u_β), not as a difference of
+  // position products, which would lose the digits of a small strain to cancellation.
+  const NodeMatrix u = current - reference;
+  const Eigen::Vector3d ua = u * alpha;
+  const Eigen::Vector3d ub = u * beta;
   StrainComponent e;
   if (kinematics == Kinematics::nonlinear) {
-    const Eigen::Vector3d a = current * alpha;
-    const Eigen::Vector3d b = current * beta;
-    e.value = 0.5 * (a.dot(b) - A.dot(B));
+    const Eigen::Vector3d a = A + ua;
+    const Eigen::Vector3d b = B + ub;
+    e.value = 0.5 * (A.dot(ub) + ua.dot(B) + ua.dot(ub));
     for (int k = 0; k < kElementNodes; ++k)
       e.gradient.segment<3>(3 * k) = 0.5 * (alpha[k] * b + beta[k] * a);
     e.hessian = 0.5 * (alpha * beta.transpose() + beta * alpha.transpose());
   } else {
-    const NodeMatrix u = current - reference;
-    e.value = 0.5 * (A.dot(u * beta) + (u * alpha).dot(B));
+    e.value = 0.5 * (A.dot(ub) + ua.dot(B));
     for (int k = 0; k < kElementNodes; ++k)
       e.gradient.segment<3>(3 * k) = 0.5 * (alpha[k] * B + beta[k] * A);
   }

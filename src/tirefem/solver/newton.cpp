@@ -17,6 +17,7 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
   NewtonOutcome out;
   double increment_norm = 0.0;
   double first_residual = -1.0;
+  double energy = 0.0, first_energy = 0.0;  // |Δu·R| of the last and of the first iteration
   for (int it = 0;; ++it) {
     problem_.evaluate(u, load_factor, true);
     const Eigen::VectorXd r = dofs.gather(problem_.system().residual());
@@ -25,7 +26,8 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
     if (!std::isfinite(rn)) return out;
     if (first_residual < 0) first_residual = rn;
     out.residual_history.push_back(out.relative_residual);
-    const bool residual_ok = out.relative_residual <= settings_.residual_tolerance;
+    const bool residual_ok = out.relative_residual <= settings_.residual_tolerance ||
+                             (it > 0 && energy <= settings_.energy_tolerance * first_energy);
     const bool increment_ok = it > 0 && increment_norm <= settings_.increment_tolerance * u.norm();
     if (residual_ok && (increment_ok || it == 0 ||
                         out.relative_residual <= 0.01 * settings_.residual_tolerance)) {
@@ -53,6 +55,8 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
     }
     dofs.scatter_add(du, u);
     increment_norm = du.norm();
+    energy = std::abs(du.dot(r));
+    if (it == 0) first_energy = energy;
     ++out.iterations;
     ++total_iterations_;
   }

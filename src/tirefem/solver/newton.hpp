@@ -13,6 +13,9 @@ using ProgressSink = std::function<void(const std::string&)>;
 struct NewtonSettings {
   double residual_tolerance = 1e-8;   // ‖R_free‖ ≤ tol · λ‖F‖ (‖F‖ = size of the full applied load)
   double increment_tolerance = 1e-7;  // ‖Δu‖ ≤ tol · ‖u‖
+  // |Δu·R| ≤ tol · |Δu₁·R₁| (first iteration): accepted instead of the residual test, so an
+  // ill-conditioned system whose residual stalls at round-off above residual_tolerance still converges.
+  double energy_tolerance = 1e-16;
   int max_iterations = 25;
   // Backtracking on ‖R‖: the step is halved (at most this many times) while it increases the residual.
   // Off by default: on the inflated tyre it saved 2 of 10 factorisations but cost 15 more assemblies.
@@ -66,7 +69,7 @@ struct LoadPathResult {
 // does not converge is halved (down to min_increment). `on_step` sees each converged state.
 LoadPathResult follow_load_path(NewtonSolver& newton, Eigen::VectorXd& u,
                                 const LoadSteppingSettings& settings,
-                                const Eigen::VectorXd* unit_predictor,
+                                const Eigen::VectorXd* unit_predictor = nullptr,
                                 const std::function<void(const LoadStepRecord&, const Eigen::VectorXd&)>&
                                     on_step = {},
                                 const ProgressSink& progress = {});
