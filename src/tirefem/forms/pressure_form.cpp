@@ -18,9 +18,8 @@ void PressureForm::assemble(const FormInput& input, SparseSystem& system) const 
 #pragma omp parallel for schedule(static)
   for (int i = 0; i < n; ++i) {
     const int e = elements_[i];
-    PressureLoad load = follower_pressure(mesh_.element_reference(e),
-                                          element_current(mesh_, e, input.displacement),
-                                          input.load_factor * pressure_, kinematics_, input.with_tangent);
+    const ElementConfiguration x = element_configuration(mesh_, e, input.displacement);
+    PressureLoad load = follower_pressure(x.reference, x.current, input.load_factor * pressure_, kinematics_, input.with_tangent);
     // Residual = internal − external: the load enters with a minus sign, and so does its stiffness.
     const ElementVector f = -load.force;
     ElementMatrix k = -load.tangent;

@@ -13,6 +13,18 @@ Eigen::Matrix<double, 3, 8> element_current(const ShellMesh& mesh, int element,
   return x;
 }
 
+ElementConfiguration element_configuration(const ShellMesh& mesh, int element, const Eigen::VectorXd& u) {
+  ElementConfiguration c;
+  c.reference = mesh.element_reference(element);
+  const Eigen::Vector3d centroid = c.reference.rowwise().mean();
+  c.reference.colwise() -= centroid;
+  c.current = c.reference;
+  const auto dofs = mesh.element_dofs(element);
+  for (int k = 0; k < 8; ++k)
+    for (int i = 0; i < 3; ++i) c.current(i, k) += u[dofs[3 * k + i]];
+  return c;
+}
+
 ShellInternalForce::ShellInternalForce(const ShellMesh& mesh, const std::vector<ElementSection>& sections,
                                        Kinematics kinematics)
     : mesh_(mesh), sections_(sections), kinematics_(kinematics) {
@@ -29,9 +41,9 @@ void ShellInternalForce::assemble(const FormInput& input, SparseSystem& system) 
 #pragma omp parallel for schedule(static)
   for (int e = 0; e < n; ++e) {
     const auto dofs = mesh_.element_dofs(e);
+    const ElementConfiguration x = element_configuration(mesh_, e, input.displacement);
     const ElementResponse r =
-        three_layer_element(mesh_.element_reference(e), element_current(mesh_, e, input.displacement),
-                            sections_[e], kinematics_, input.with_tangent);
+        three_layer_element(x.reference, x.current, sections_[e], kinematics_, input.with_tangent);
     system.add(dofs, r.force, r.tangent, input.with_tangent);
   }
 }

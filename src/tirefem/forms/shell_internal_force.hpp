@@ -12,6 +12,15 @@ namespace tirefem {
 Eigen::Matrix<double, 3, 8> element_current(const ShellMesh& mesh, int element,
                                             const Eigen::VectorXd& displacement);
 
+// Reference and current positions of an element's nodes relative to its reference centroid. The element
+// is translation-invariant, and it recovers u as current − reference: with positions near the origin
+// that difference keeps its digits (at tyre coordinates, ~300 mm, it would not).
+struct ElementConfiguration {
+  NodeMatrix reference, current;
+};
+ElementConfiguration element_configuration(const ShellMesh& mesh, int element,
+                                           const Eigen::VectorXd& displacement);
+
 class ShellInternalForce final : public Form {
  public:
   ShellInternalForce(const ShellMesh& mesh, const std::vector<ElementSection>& sections,
