@@ -59,7 +59,7 @@ InflationResult run_inflation(const TyreMesh& tm, const InflationSettings& setti
                          settings.linear ? "linear" : "nonlinear", problem->dofs().equation_count()));
   NewtonSolver newton(*problem, newton_settings);
   const LoadPathResult path =
-      follow_load_path(newton, result.displacement, LoadSteppingSettings{}, nullptr, {}, progress);
+      follow_load_path(newton, result.displacement, LoadSteppingSettings{}, {}, progress);
   add_counters(c, newton, *problem);
   result.converged = path.completed;
   result.steps = path.steps;

@@ -64,7 +64,7 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
 
 LoadPathResult follow_load_path(
     NewtonSolver& newton, Eigen::VectorXd& u, const LoadSteppingSettings& settings,
-    const Eigen::VectorXd* unit_predictor, const std::function<void(const LoadStepRecord&, const Eigen::VectorXd&)>& on_step,
+    const std::function<void(const LoadStepRecord&, const Eigen::VectorXd&)>& on_step,
     const ProgressSink& progress) {
   LoadPathResult result;
   double lambda = 0.0;
@@ -77,8 +77,6 @@ LoadPathResult follow_load_path(
     Eigen::VectorXd trial = u;
     if (lambda > previous_lambda)  // secant predictor from the last two converged states
       trial += (target - lambda) / (lambda - previous_lambda) * (u - previous);
-    else if (unit_predictor)
-      trial += (target - lambda) * *unit_predictor;
     const NewtonOutcome outcome = newton.solve(trial, target);
     if (!outcome.converged) {
       ++result.cutbacks;

@@ -64,12 +64,10 @@ struct LoadPathResult {
   int cutbacks = 0;
 };
 
-// Drives λ from 0 to 1. Each step starts from a secant prediction of the last two converged states (the
-// first from λ·`unit_predictor` if given, e.g. the linear-theory solution at λ = 1); an increment that
-// does not converge is halved (down to min_increment). `on_step` sees each converged state.
+// Drives λ from 0 to 1. Each step starts from a secant prediction of the last two converged states; an
+// increment that does not converge is halved (down to min_increment). `on_step` sees each converged state.
 LoadPathResult follow_load_path(NewtonSolver& newton, Eigen::VectorXd& u,
                                 const LoadSteppingSettings& settings,
-                                const Eigen::VectorXd* unit_predictor = nullptr,
                                 const std::function<void(const LoadStepRecord&, const Eigen::VectorXd&)>&
                                     on_step = {},
                                 const ProgressSink& progress = {});
