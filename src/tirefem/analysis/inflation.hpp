@@ -19,6 +19,10 @@ struct SolveCounters {
   double solve_s = 0.0;
   double wall_s = 0.0;
   bool used_lu = false;
+  int krylov_solves = 0;      // Newton systems solved by GMRES on a reused factorisation
+  int krylov_failures = 0;
+  int krylov_iterations = 0;
+  double krylov_s = 0.0;
 };
 
 struct InflationResult {

@@ -73,12 +73,60 @@ struct InflationSettings {
   double residual_tolerance = 1e-8;
 };
 
+// A rigid support surface, moved towards the fixed axle by the deflection δz (road/support_surface.hpp).
+struct SupportDescription {
+  enum class Kind { plane, drum, surface };
+  Kind kind = Kind::plane;
+  double drum_diameter = 1830.0;  // mm (kind drum): a cylinder with its axis parallel to the wheel axis
+  // Kind surface: z = f(x, y) = Σ coefficient · x^x_power · y^y_power (mm), a smooth shallow road.
+  struct Term {
+    double coefficient = 0.0;
+    int x_power = 0;
+    int y_power = 0;
+  };
+  std::vector<Term> terms;
+};
+
+// How the tread–road contact is solved (forms/winkler_contact_form.hpp, analysis/footprint.hpp).
+struct ContactSettings {
+  int quadrature = 4;  // Gauss points per direction on each element's breaker face (n × n)
+  // two_level: the paper's scheme, an outer loop revising the contact region around a Newton solve with
+  // the region frozen. single_loop: the region follows the iterate inside one Newton loop.
+  enum class Iteration { two_level, single_loop };
+  Iteration iteration = Iteration::two_level;
+  int max_contact_iterations = 30;  // outer loop
+  int region_tolerance = 0;         // the region is settled when at most this many points changed
+  int max_newton_iterations = 25;   // inner loop (per outer iteration)
+  double residual_tolerance = 1e-8; // Newton: ‖R‖ relative to the size of the inflation load
+};
+
+// Load characteristic Qz(δz): the support pressed onto the inflated tyre in equal deflection steps.
+struct LoadCurveStudy {
+  std::string name;  // used in file names and the summary; unique, [A-Za-z0-9_-]
+  SupportDescription support;
+  bool linear = false;          // geometrically linear theory (inflation and contact)
+  double max_deflection = 40.0; // mm
+  int points = 20;              // load points after the unloaded one (equal steps in δz)
+};
+
+// The footprint at a target vertical load: δz is found so that Qz (full tyre) equals target_load.
+struct FootprintStudy {
+  std::string name;  // as LoadCurveStudy::name
+  SupportDescription support;
+  bool linear = false;
+  double target_load = 3700.0;    // N, full tyre
+  double load_tolerance = 1e-3;   // |Qz − target| ≤ tolerance · target
+};
+
 struct Case {
   std::filesystem::path source;  // the file it came from (for messages and relative paths)
   std::string title;
   TyreDescription tyre;
   MeshSettings mesh;
   InflationSettings inflation;
+  ContactSettings contact;
+  std::vector<LoadCurveStudy> load_curves;  // [[load_curve]] tables, run in order after inflation
+  std::vector<FootprintStudy> footprints;   // [[footprint]] tables
 };
 
 }  // namespace tirefem

@@ -63,6 +63,10 @@ std::string type_name(toml::node_type t) {
 }
 
 // --------------------------------------------------------------------------------------- validation
+constexpr int kMaxSurfacePower = 8;        // support surface terms: x^p y^q with p, q in [0, 8]
+constexpr int kMaxQuadrature = 8;          // contact: Gauss points per direction
+constexpr double kMaxLoadTolerance = 0.1;  // footprint: relative tolerance on the vertical load
+
 // Checks on values, shared by parse_case (which knows where each field is) and validate_case.
 class Checker {
  public:
@@ -86,6 +90,12 @@ class Checker {
   void in_range(double v, double lo, double hi, const std::string& path) const {
     finite(v, path);
     if (!(v >= lo && v <= hi)) fail(path, fmt::format("must be in [{}, {}] (got {})", lo, hi, v));
+  }
+  void at_least(int v, int lo, const std::string& path) const {
+    if (v < lo) fail(path, fmt::format("must be ≥ {} (got {})", lo, v));
+  }
+  void int_range(int v, int lo, int hi, const std::string& path) const {
+    if (v < lo || v > hi) fail(path, fmt::format("must be in [{}, {}] (got {})", lo, hi, v));
   }
 
   void ply(const Ply& p, const std::string& path) const {
@@ -169,6 +179,72 @@ class Checker {
     }
   }
 
+  void contact(const ContactSettings& s, const std::string& path) const {
+    int_range(s.quadrature, 1, kMaxQuadrature, join(path, "quadrature"));
+    at_least(s.max_contact_iterations, 1, join(path, "max_contact_iterations"));
+    at_least(s.region_tolerance, 0, join(path, "region_tolerance"));
+    at_least(s.max_newton_iterations, 1, join(path, "max_newton_iterations"));
+    positive(s.residual_tolerance, join(path, "residual_tolerance"));
+  }
+
+  void support(const SupportDescription& s, const std::string& path) const {
+    if (s.kind == SupportDescription::Kind::drum) positive(s.drum_diameter, join(path, "diameter"));
+    if (s.kind != SupportDescription::Kind::surface) return;
+    const std::string tp = join(path, "terms");
+    if (s.terms.empty()) fail(tp, "a surface needs at least one term { coefficient, x_power, y_power }");
+    for (std::size_t i = 0; i < s.terms.size(); ++i) {
+      const SupportDescription::Term& t = s.terms[i];
+      const std::string p = index(tp, i);
+      finite(t.coefficient, join(p, "coefficient"));
+      int_range(t.x_power, 0, kMaxSurfacePower, join(p, "x_power"));
+      int_range(t.y_power, 0, kMaxSurfacePower, join(p, "y_power"));
+      if (t.x_power == 0 && t.y_power == 0 && t.coefficient != 0.0)
+        fail(join(p, "coefficient"),
+             fmt::format("a constant term (x_power = y_power = 0) must be zero (got {}): the road must pass "
+                         "through the origin, where the undeformed tyre touches it",
+                         t.coefficient));
+    }
+  }
+
+  // Study names end up in file names: non-empty, [A-Za-z0-9_-], unique among load curves and footprints.
+  void study_name(const std::string& name, const std::string& path,
+                  std::map<std::string, std::string>& seen) const {
+    if (name.empty()) fail(path, "must not be empty (it names the study's output files)");
+    const bool plain = std::all_of(name.begin(), name.end(), [](char ch) {
+      return (ch >= 'A' && ch <= 'Z') || (ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9') || ch == '_' ||
+             ch == '-';
+    });
+    if (!plain)
+      fail(path, fmt::format("may contain only letters A-Z a-z, digits 0-9, '_' and '-' (got \"{}\")", name));
+    if (const auto [it, added] = seen.emplace(name, path); !added)
+      fail(path, fmt::format("duplicate name \"{}\" (already used by {}); load curves and footprints need "
+                             "distinct names",
+                             name, it->second));
+  }
+
+  void studies(const Case& c) const {
+    std::map<std::string, std::string> seen;  // name -> path of the study that has it
+    for (std::size_t i = 0; i < c.load_curves.size(); ++i) {
+      const LoadCurveStudy& s = c.load_curves[i];
+      const std::string p = index("load_curve", i);
+      study_name(s.name, join(p, "name"), seen);
+      support(s.support, join(p, "support"));
+      positive(s.max_deflection, join(p, "max_deflection"));
+      at_least(s.points, 1, join(p, "points"));
+    }
+    for (std::size_t i = 0; i < c.footprints.size(); ++i) {
+      const FootprintStudy& s = c.footprints[i];
+      const std::string p = index("footprint", i);
+      study_name(s.name, join(p, "name"), seen);
+      support(s.support, join(p, "support"));
+      positive(s.target_load, join(p, "target_load"));
+      finite(s.load_tolerance, join(p, "load_tolerance"));
+      if (!(s.load_tolerance > 0 && s.load_tolerance < kMaxLoadTolerance))
+        fail(join(p, "load_tolerance"),
+             fmt::format("must be > 0 and < {} (got {})", kMaxLoadTolerance, s.load_tolerance));
+    }
+  }
+
   void run(const Case& c) const {
     const TyreDescription& t = c.tyre;
     const double length = profile(t.profile, "tyre.profile.points");
@@ -219,6 +295,9 @@ class Checker {
       fail("inflation.max_newton_iterations",
            fmt::format("must be ≥ 1 (got {})", c.inflation.max_newton_iterations));
     positive(c.inflation.residual_tolerance, "inflation.residual_tolerance");
+
+    contact(c.contact, "contact");
+    studies(c);
   }
 
  private:
@@ -324,6 +403,20 @@ class Reader {
   double req_number(const toml::table& t, const std::string& path, std::string_view key,
                     std::string_view unit) {
     return number(need(t, path, key, fmt::format("a number{}", unit)), join(path, key), unit);
+  }
+
+  // A string out of a fixed list; returns its index in `values`.
+  std::size_t choice(const toml::node& n, const std::string& path,
+                     std::initializer_list<std::string_view> values) {
+    const std::string s = string(n, path);
+    std::string list;
+    std::size_t i = 0;
+    for (std::string_view v : values) {
+      if (v == s) return i;
+      list += fmt::format("{}\"{}\"", i == 0 ? "" : i + 1 == values.size() ? " or " : ", ", v);
+      ++i;
+    }
+    fail(path, fmt::format("must be {} (got \"{}\")", list, s));
   }
 
   CordRubberRule rule(const toml::node& n, const std::string& path) {
@@ -503,8 +596,110 @@ class Reader {
     return d;
   }
 
+  ContactSettings contact(const toml::node& n, const std::string& path) {
+    const toml::table& t = table(n, path,
+                                 {"quadrature", "iteration", "max_contact_iterations", "region_tolerance",
+                                  "max_newton_iterations", "residual_tolerance"});
+    ContactSettings s;
+    opt_integer(t, path, "quadrature", s.quadrature);
+    if (const toml::node* v = get(t, path, "iteration"))
+      s.iteration = static_cast<ContactSettings::Iteration>(
+          choice(*v, join(path, "iteration"), {"two_level", "single_loop"}));  // enum order
+    opt_integer(t, path, "max_contact_iterations", s.max_contact_iterations);
+    opt_integer(t, path, "region_tolerance", s.region_tolerance);
+    opt_integer(t, path, "max_newton_iterations", s.max_newton_iterations);
+    opt_number(t, path, "residual_tolerance", s.residual_tolerance, "");
+    return s;
+  }
+
+  // { kind = "plane" }, { kind = "drum", diameter = mm } or { kind = "surface", terms = [...] }; the keys
+  // allowed depend on the kind.
+  SupportDescription support(const toml::node& n, const std::string& path) {
+    using Kind = SupportDescription::Kind;
+    positions_[path] = n.source().begin;
+    const toml::table* raw = n.as_table();
+    if (!raw)
+      fail(path, fmt::format("must be a table {{ kind = \"plane\", \"drum\" or \"surface\", ... }} (got {})",
+                             type_name(n.type())));
+    if (!raw->contains("kind"))
+      table(n, path, {"kind", "diameter", "terms"});  // a misspelt kind: "did you mean"
+    SupportDescription s;
+    s.kind = static_cast<Kind>(choice(need(*raw, path, "kind", "\"plane\", \"drum\" or \"surface\""),
+                                      join(path, "kind"), {"plane", "drum", "surface"}));  // enum order
+    static constexpr std::string_view kind_names[] = {"plane", "drum", "surface"};
+    const std::string_view kind = kind_names[static_cast<int>(s.kind)];
+    for (auto&& [k, v] : *raw) {  // a key of another kind: say which kind it belongs to
+      const Kind owner = k.str() == "diameter" ? Kind::drum : k.str() == "terms" ? Kind::surface : s.kind;
+      if (owner == s.kind) continue;
+      positions_[join(path, k.str())] = k.source().begin;
+      fail(join(path, k.str()),
+           fmt::format("not allowed for kind \"{}\" ({} belongs to kind \"{}\"; a {} support takes {})", kind,
+                       k.str(), kind_names[static_cast<int>(owner)], kind,
+                       s.kind == Kind::plane  ? "no other keys"
+                       : s.kind == Kind::drum ? "diameter"
+                                              : "terms"));
+    }
+    if (s.kind == Kind::plane) {
+      table(n, path, {"kind"});
+    } else if (s.kind == Kind::drum) {
+      const toml::table& t = table(n, path, {"kind", "diameter"});
+      s.drum_diameter = req_number(t, path, "diameter", " (mm, the drum's outer diameter)");
+    } else {
+      const toml::table& t = table(n, path, {"kind", "terms"});
+      const std::string tp = join(path, "terms");
+      const toml::array& a =
+          array(need(t, path, "terms",
+                     "an array of terms { coefficient, x_power, y_power }, z = Σ coefficient · x^x_power · "
+                     "y^y_power (mm)"),
+                tp, "terms { coefficient, x_power, y_power }");
+      for (std::size_t i = 0; i < a.size(); ++i) {
+        const std::string p = index(tp, i);
+        const toml::table& term = table(a[i], p, {"coefficient", "x_power", "y_power"});
+        SupportDescription::Term tm;
+        tm.coefficient = req_number(term, p, "coefficient", " (mm^(1 - x_power - y_power))");
+        opt_integer(term, p, "x_power", tm.x_power);
+        opt_integer(term, p, "y_power", tm.y_power);
+        s.terms.push_back(tm);
+      }
+    }
+    return s;
+  }
+
+  // Fields common to [[load_curve]] and [[footprint]].
+  template <class Study>
+  void study_common(const toml::table& t, const std::string& path, Study& s) {
+    s.name =
+        string(need(t, path, "name", "a string ([A-Za-z0-9_-], unique among load curves and footprints)"),
+               join(path, "name"));
+    s.support = support(need(t, path, "support",
+                             "a table { kind = \"plane\" }, { kind = \"drum\", diameter = mm } or "
+                             "{ kind = \"surface\", terms = [...] }"),
+                        join(path, "support"));
+    if (const toml::node* v = get(t, path, "theory"))
+      s.linear = choice(*v, join(path, "theory"), {"nonlinear", "linear"}) == 1;
+  }
+
+  LoadCurveStudy load_curve(const toml::node& n, const std::string& path) {
+    const toml::table& t = table(n, path, {"name", "support", "theory", "max_deflection", "points"});
+    LoadCurveStudy s;
+    study_common(t, path, s);
+    opt_number(t, path, "max_deflection", s.max_deflection, " (mm)");
+    opt_integer(t, path, "points", s.points);
+    return s;
+  }
+
+  FootprintStudy footprint(const toml::node& n, const std::string& path) {
+    const toml::table& t = table(n, path, {"name", "support", "theory", "target_load", "load_tolerance"});
+    FootprintStudy s;
+    study_common(t, path, s);
+    opt_number(t, path, "target_load", s.target_load, " (N)");
+    opt_number(t, path, "load_tolerance", s.load_tolerance, " (relative)");
+    return s;
+  }
+
   Case read(const toml::table& root) {
-    const toml::table& r = table(root, "", {"title", "tyre", "mesh", "inflation"});
+    const toml::table& r =
+        table(root, "", {"title", "tyre", "mesh", "inflation", "contact", "load_curve", "footprint"});
     Case c;
     if (const toml::node* v = get(r, "", "title")) c.title = string(*v, "title");
     c.tyre = tyre(need(r, "", "tyre", "a table [tyre]"), "tyre");
@@ -526,6 +721,17 @@ class Reader {
       opt_bool(m, "inflation", "linear", c.inflation.linear);
       opt_integer(m, "inflation", "max_newton_iterations", c.inflation.max_newton_iterations);
       opt_number(m, "inflation", "residual_tolerance", c.inflation.residual_tolerance, "");
+    }
+    if (const toml::node* v = get(r, "", "contact")) c.contact = contact(*v, "contact");
+    if (const toml::node* v = get(r, "", "load_curve")) {
+      const toml::array& a = array(*v, "load_curve", "tables [[load_curve]]");
+      for (std::size_t i = 0; i < a.size(); ++i)
+        c.load_curves.push_back(load_curve(a[i], index("load_curve", i)));
+    }
+    if (const toml::node* v = get(r, "", "footprint")) {
+      const toml::array& a = array(*v, "footprint", "tables [[footprint]]");
+      for (std::size_t i = 0; i < a.size(); ++i)
+        c.footprints.push_back(footprint(a[i], index("footprint", i)));
     }
     return c;
   }

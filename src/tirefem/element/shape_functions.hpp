@@ -1,6 +1,7 @@
 #pragma once
 // Bilinear shape functions of a quadrilateral face, nodes counter-clockwise from (−1, −1).
 #include <array>
+#include <vector>
 
 #include <Eigen/Dense>
 
@@ -30,5 +31,16 @@ inline BilinearShape bilinear_shape(double xi, double eta) {
 inline constexpr double kGauss2 = 0.57735026918962576451;
 inline constexpr std::array<std::array<double, 2>, 4> kGauss2x2{
     {{-kGauss2, -kGauss2}, {kGauss2, -kGauss2}, {kGauss2, kGauss2}, {-kGauss2, kGauss2}}};
+
+}  // namespace tirefem
+
+namespace tirefem {
+
+// n-point Gauss–Legendre rule on [−1, 1] (Golub–Welsch: the nodes are the eigenvalues of the Jacobi
+// matrix of the Legendre polynomials, the weights 2 × the squared first components of its eigenvectors).
+struct GaussRule {
+  std::vector<double> points, weights;
+};
+GaussRule gauss_legendre(int n);
 
 }  // namespace tirefem

@@ -5,6 +5,7 @@
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/UmfPackSupport>
+#include <unsupported/Eigen/IterativeSolvers>
 
 namespace tirefem {
 namespace {
@@ -18,13 +19,17 @@ struct SparseDirectSolver::Impl {
   bool cholesky_analysed = false;
   bool lu_analysed = false;
   bool lu_active = false;  // the last factorisation is the LU one
+  bool factorized = false;
   int cholesky_failures = 0;
+  bool sticky_lu = true;
+  double last_shift = 0.0;
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholesky;
   Eigen::UmfPackLU<SparseMatrix> lu;
 };
 
-SparseDirectSolver::SparseDirectSolver(bool symmetric) : impl_(std::make_unique<Impl>()) {
+SparseDirectSolver::SparseDirectSolver(bool symmetric, bool sticky_lu) : impl_(std::make_unique<Impl>()) {
   impl_->use_lu = !symmetric;
+  impl_->sticky_lu = sticky_lu;
 }
 
 SparseDirectSolver::~SparseDirectSolver() = default;
@@ -45,10 +50,11 @@ void SparseDirectSolver::factorize(const SparseMatrix& matrix) {
     if (s.cholesky.info() == Eigen::Success) {
       s.cholesky_failures = 0;
       s.lu_active = false;
+      s.factorized = true;
       return;
     }
     // Not positive definite: LU for this matrix; after two such matrices in a row, LU from now on.
-    if (++s.cholesky_failures >= 2) s.use_lu = true;
+    if (++s.cholesky_failures >= 2 && s.sticky_lu) s.use_lu = true;
   }
   if (!s.lu_analysed) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -62,6 +68,7 @@ void SparseDirectSolver::factorize(const SparseMatrix& matrix) {
   ++stats_.factorizations;
   stats_.used_lu = true;
   s.lu_active = true;
+  s.factorized = s.lu.info() == Eigen::Success;
   if (s.lu.info() != Eigen::Success) throw std::runtime_error("the tangent stiffness matrix is singular");
 }
 
@@ -72,6 +79,75 @@ Eigen::VectorXd SparseDirectSolver::solve(const Eigen::VectorXd& rhs) {
   stats_.solve_s += seconds_since(t0);
   ++stats_.solves;
   return x;
+}
+
+bool SparseDirectSolver::has_factorization() const { return impl_->factorized; }
+
+double SparseDirectSolver::factorize_shifted(const SparseMatrix& matrix) {
+  auto& s = *impl_;
+  if (!s.cholesky_analysed) {
+    const auto t0 = std::chrono::steady_clock::now();
+    s.cholesky.analyzePattern(matrix);
+    s.cholesky_analysed = true;
+    stats_.analysis_s += seconds_since(t0);
+  }
+  const double mean_diagonal = matrix.diagonal().cwiseAbs().mean();
+  double shift = s.last_shift;
+  while (true) {
+    const auto t0 = std::chrono::steady_clock::now();
+    s.cholesky.setShift(shift);
+    s.cholesky.factorize(matrix);
+    s.cholesky.setShift(0.0);
+    stats_.factorization_s += seconds_since(t0);
+    ++stats_.factorizations;
+    if (s.cholesky.info() == Eigen::Success) break;
+    shift = shift == 0.0 ? 1e-4 * mean_diagonal : 10.0 * shift;
+    if (shift > mean_diagonal) throw std::runtime_error("no shift makes the tangent positive definite");
+  }
+  if (shift > 0) ++stats_.shifted_factorizations;
+  s.last_shift = shift;
+  s.factorized = true;
+  s.lu_active = false;
+  return shift;
+}
+
+namespace {
+// Eigen preconditioner interface over a factorisation made elsewhere: compute() does nothing.
+class FactorizationPreconditioner {
+ public:
+  FactorizationPreconditioner() = default;
+  void bind(SparseDirectSolver* solver) { solver_ = solver; }
+  template <class M>
+  FactorizationPreconditioner& analyzePattern(const M&) { return *this; }
+  template <class M>
+  FactorizationPreconditioner& factorize(const M&) { return *this; }
+  template <class M>
+  FactorizationPreconditioner& compute(const M&) { return *this; }
+  template <class Rhs>
+  Eigen::VectorXd solve(const Rhs& b) const { return solver_->solve(Eigen::VectorXd(b)); }
+  Eigen::ComputationInfo info() { return Eigen::Success; }
+
+ private:
+  SparseDirectSolver* solver_ = nullptr;
+};
+}  // namespace
+
+bool SparseDirectSolver::solve_preconditioned(const SparseMatrix& matrix, const Eigen::VectorXd& rhs,
+                                              Eigen::VectorXd& x, double tolerance, int max_iterations) {
+  if (!has_factorization()) return false;
+  const auto t0 = std::chrono::steady_clock::now();
+  Eigen::GMRES<SparseMatrix, FactorizationPreconditioner> gmres;
+  gmres.preconditioner().bind(this);
+  gmres.set_restart(max_iterations);
+  gmres.setMaxIterations(max_iterations);
+  gmres.setTolerance(tolerance);
+  gmres.compute(matrix);
+  x = gmres.solve(rhs);
+  const bool ok = gmres.info() == Eigen::Success && x.allFinite();
+  stats_.krylov_iterations += static_cast<int>(gmres.iterations());
+  ++(ok ? stats_.krylov_solves : stats_.krylov_failures);
+  stats_.krylov_s += seconds_since(t0);
+  return ok;
 }
 
 }  // namespace tirefem

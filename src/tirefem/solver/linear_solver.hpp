@@ -15,11 +15,19 @@ struct LinearSolverStats {
   double factorization_s = 0.0;
   double solve_s = 0.0;
   bool used_lu = false;
+  int shifted_factorizations = 0;  // of an indefinite matrix, as a preconditioner
+  int krylov_solves = 0;      // successful preconditioned GMRES solves (a factorisation reused)
+  int krylov_failures = 0;    // GMRES solves given up (followed by a new factorisation)
+  int krylov_iterations = 0;  // over all of them
+  double krylov_s = 0.0;
 };
 
 class SparseDirectSolver {
  public:
-  explicit SparseDirectSolver(bool symmetric);
+  // `sticky_lu`: after two symmetric matrices in a row that are not positive definite, use LU for all
+  // later ones (saves the failed Cholesky attempts when the problem stays indefinite); otherwise every
+  // factorisation tries Cholesky first.
+  explicit SparseDirectSolver(bool symmetric, bool sticky_lu = true);
   ~SparseDirectSolver();
   SparseDirectSolver(const SparseDirectSolver&) = delete;
   SparseDirectSolver& operator=(const SparseDirectSolver&) = delete;
@@ -27,6 +35,19 @@ class SparseDirectSolver {
   // Throws std::runtime_error if the matrix is singular.
   void factorize(const SparseMatrix& matrix);
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
+  bool has_factorization() const;
+
+  // A Cholesky factorisation of A + σI for use as a preconditioner (solve_preconditioned): σ = 0 when A
+  // is positive definite, else the smallest tried of σ₀, 10σ₀, … (σ₀ = 1e-4 × mean |diagonal|, starting
+  // from the last shift that worked) that makes it so. Returns σ; throws when no σ up to the mean
+  // diagonal works.
+  double factorize_shifted(const SparseMatrix& matrix);
+
+  // Solves A x = b by GMRES preconditioned with the last factorisation (of an earlier, nearby matrix):
+  // the iteration that lets load steps reuse a factorisation. Returns false (x undefined) when the
+  // preconditioned residual does not fall below `tolerance` × its initial value within max_iterations.
+  bool solve_preconditioned(const SparseMatrix& matrix, const Eigen::VectorXd& rhs, Eigen::VectorXd& x,
+                            double tolerance, int max_iterations);
   const LinearSolverStats& stats() const { return stats_; }
 
  private:

@@ -9,7 +9,7 @@
 namespace tirefem {
 
 NewtonSolver::NewtonSolver(NonlinearProblem& problem, NewtonSettings settings)
-    : problem_(problem), settings_(settings), linear_(problem.symmetric()) {}
+    : problem_(problem), settings_(settings), linear_(problem.symmetric(), /*sticky_lu=*/!settings.reuse_factorization) {}
 
 NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
   const DofMap& dofs = problem_.dofs();
@@ -36,13 +36,8 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
     }
     if (it >= settings_.max_iterations) return out;
     if (it >= 3 && rn > 1e4 * first_residual) return out;  // diverging
-    try {
-      linear_.factorize(problem_.system().tangent());
-    } catch (const std::runtime_error&) {
-      return out;
-    }
-    Eigen::VectorXd du = linear_.solve(-r);
-    if (!du.allFinite()) return out;
+    Eigen::VectorXd du;
+    if (!solve_linear(-r, du)) return out;
     // Line search: far from the solution (an unstressed membrane under follower pressure) a full
     // Newton step can overshoot by orders of magnitude; halve it while the residual grows.
     for (int halving = 0; halving < settings_.max_line_search_halvings; ++halving) {
@@ -59,6 +54,34 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
     if (it == 0) first_energy = energy;
     ++out.iterations;
     ++total_iterations_;
+  }
+}
+
+bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du) {
+  const SparseMatrix& tangent = problem_.system().tangent();
+  try {
+    if (!settings_.reuse_factorization) {
+      linear_.factorize(tangent);
+      du = linear_.solve(rhs);
+      return du.allFinite();
+    }
+    // Reuse the last factorisation as a preconditioner; refactorise when that no longer converges fast.
+    if (linear_.solve_preconditioned(tangent, rhs, du, settings_.krylov_tolerance,
+                                     settings_.max_krylov_iterations))
+      return true;
+    if (linear_.factorize_shifted(tangent) == 0.0) {
+      du = linear_.solve(rhs);
+      return du.allFinite();
+    }
+    // Indefinite tangent: the shifted factorisation preconditions GMRES; LU if even that fails.
+    if (linear_.solve_preconditioned(tangent, rhs, du, settings_.krylov_tolerance,
+                                     4 * settings_.max_krylov_iterations))
+      return true;
+    linear_.factorize(tangent);
+    du = linear_.solve(rhs);
+    return du.allFinite();
+  } catch (const std::runtime_error&) {
+    return false;
   }
 }
 

@@ -20,6 +20,13 @@ struct NewtonSettings {
   // Backtracking on ‖R‖: the step is halved (at most this many times) while it increases the residual.
   // Off by default: on the inflated tyre it saved 2 of 10 factorisations but cost 15 more assemblies.
   int max_line_search_halvings = 0;
+  // Reuse factorisations: each Newton system is first solved by GMRES preconditioned with the last
+  // factorisation (of an earlier tangent); only when that does not converge within max_krylov_iterations
+  // is the current tangent factorised. Along a load path the tangent changes little between iterations
+  // and steps, so most iterations cost a few triangular solves instead of a factorisation.
+  bool reuse_factorization = false;
+  int max_krylov_iterations = 12;
+  double krylov_tolerance = 1e-3;  // relative to the preconditioned residual (inexact Newton)
 };
 
 struct NewtonOutcome {
@@ -39,6 +46,8 @@ class NewtonSolver {
   int total_iterations() const { return total_iterations_; }
 
  private:
+  bool solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du);
+
   NonlinearProblem& problem_;
   NewtonSettings settings_;
   SparseDirectSolver linear_;

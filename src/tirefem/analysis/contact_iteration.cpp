@@ -1,0 +1,113 @@
+#include "tirefem/analysis/contact_iteration.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace tirefem {
+
+namespace {
+int count_changes(const std::vector<char>& a, const std::vector<char>& b) {
+  int n = 0;
+  for (std::size_t k = 0; k < a.size(); ++k) n += (a[k] != 0) != (b[k] != 0);
+  return n;
+}
+}  // namespace
+
+ContactSolveOutcome solve_contact(NewtonSolver& newton, WinklerContactForm& contact, Eigen::VectorXd& u,
+                                  const ContactSettings& settings) {
+  ContactSolveOutcome out;
+  if (settings.iteration == ContactSettings::Iteration::single_loop) {
+    contact.release_region();
+    const NewtonOutcome n = newton.solve(u, 1.0);
+    out.contact_iterations = 1;
+    out.newton_iterations = n.iterations;
+    out.converged = n.converged;
+    if (!n.converged) out.failure = fmt::format("Newton: residual {:.1e} after {} iterations", n.relative_residual, n.iterations);
+    return out;
+  }
+  // Two-level iteration: Ωc from the starting state (the prediction), then revised after each solve.
+  std::vector<char> region = contact.region(u);
+  for (int outer = 1; outer <= settings.max_contact_iterations; ++outer) {
+    contact.freeze_region(region);
+    const NewtonOutcome n = newton.solve(u, 1.0);
+    out.contact_iterations = outer;
+    out.newton_iterations += n.iterations;
+    if (!n.converged) {
+      out.failure = fmt::format("Newton in contact iteration {}: residual {:.1e} after {} iterations", outer,
+                                n.relative_residual, n.iterations);
+      return out;
+    }
+    std::vector<char> revised = contact.region(u);
+    out.region_changes = count_changes(region, revised);
+    if (out.region_changes <= settings.region_tolerance) {
+      out.converged = true;
+      return out;
+    }
+    region = std::move(revised);
+  }
+  out.failure = fmt::format("contact region not settled after {} iterations ({} points still changing)",
+                            settings.max_contact_iterations, out.region_changes);
+  return out;
+}
+
+DeflectionPath::DeflectionPath(NewtonSolver& newton, WinklerContactForm& contact,
+                               const ContactSettings& settings, Eigen::VectorXd start, double start_deflection)
+    : newton_(newton), contact_(contact), settings_(settings) {
+  states_.push_back({start_deflection, std::move(start)});
+}
+
+const DeflectionPath::State& DeflectionPath::nearest(double deflection) const {
+  return *std::min_element(states_.begin(), states_.end(), [deflection](const State& a, const State& b) {
+    return std::abs(a.deflection - deflection) < std::abs(b.deflection - deflection);
+  });
+}
+
+Eigen::VectorXd DeflectionPath::predict(double deflection) const {
+  // Linear in δz through the two converged states nearest to the target (secant predictor).
+  const State& a = nearest(deflection);
+  const State* b = nullptr;
+  for (const State& s : states_)
+    if (&s != &a && std::abs(s.deflection - a.deflection) > 1e-12 &&
+        (!b || std::abs(s.deflection - deflection) < std::abs(b->deflection - deflection)))
+      b = &s;
+  if (!b) return a.u;
+  const double t = (deflection - a.deflection) / (b->deflection - a.deflection);
+  return a.u + t * (b->u - a.u);
+}
+
+DeflectionPath::Step DeflectionPath::advance_to(double deflection, int max_cutbacks) {
+  Step step;
+  double from = nearest(deflection).deflection;
+  double increment = deflection - from;
+  while (true) {
+    const bool last = std::abs(increment) >= std::abs(deflection - from) - 1e-12;
+    const double target = last ? deflection : from + increment;
+    Eigen::VectorXd u = predict(target);
+    contact_.set_deflection(target);
+    const ContactSolveOutcome outcome = solve_contact(newton_, contact_, u, settings_);
+    step.newton_iterations += outcome.newton_iterations;
+    if (!outcome.converged) {
+      if (step.cutbacks >= max_cutbacks) {
+        step.failure = fmt::format("δz = {:.4g} mm: {} (after {} cut-backs)", target, outcome.failure,
+                                   step.cutbacks);
+        contact_.set_deflection(states_.back().deflection);
+        return step;
+      }
+      ++step.cutbacks;
+      increment *= 0.5;
+      continue;
+    }
+    ++step.increments;
+    states_.push_back({target, std::move(u)});
+    from = target;
+    if (last) {
+      step.converged = true;
+      step.last = outcome;
+      return step;
+    }
+  }
+}
+
+}  // namespace tirefem

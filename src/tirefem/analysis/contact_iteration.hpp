@@ -1,0 +1,63 @@
+#pragma once
+// Solving one load point of a contact problem (MODEL.md §4): the two-level iteration of the paper (outer
+// loop revises the contact region Ωc by eq. 5, inner Newton loop solves eq. 13 with Ωc frozen, until Ωc
+// repeats) or the single-loop variant (Ωc = {g > 0} at every Newton iterate), and the path of load points
+// in the deflection δz with prediction and cut-back.
+#include <string>
+#include <vector>
+
+#include "tirefem/case/case.hpp"
+#include "tirefem/forms/winkler_contact_form.hpp"
+#include "tirefem/solver/newton.hpp"
+
+namespace tirefem {
+
+struct ContactSolveOutcome {
+  bool converged = false;
+  int contact_iterations = 0;  // outer iterations = Newton solves (1 for the single loop)
+  int newton_iterations = 0;   // linear solves
+  int region_changes = 0;      // points whose membership of Ωc changed in the last outer iteration
+  std::string failure;
+};
+
+// Solves at the contact form's current deflection, starting from u (overwritten by the solution; left at
+// the last iterate on failure).
+ContactSolveOutcome solve_contact(NewtonSolver& newton, WinklerContactForm& contact, Eigen::VectorXd& u,
+                                  const ContactSettings& settings);
+
+// Converged states along δz, with a predictor from the nearest two of them and halving cut-back.
+class DeflectionPath {
+ public:
+  DeflectionPath(NewtonSolver& newton, WinklerContactForm& contact, const ContactSettings& settings,
+                 Eigen::VectorXd start, double start_deflection = 0.0);
+
+  struct Step {
+    bool converged = false;
+    int increments = 0;          // solves that converged on the way (1 without cut-back)
+    int cutbacks = 0;
+    ContactSolveOutcome last;    // the solve that reached the target
+    int newton_iterations = 0;   // over all solves, failed ones included
+    std::string failure;
+  };
+  // Moves the support to `deflection` from the nearest converged state, cutting the increment back by
+  // halving (at most `max_cutbacks` times) when a solve fails. On success the state is recorded.
+  Step advance_to(double deflection, int max_cutbacks = 6);
+
+  const Eigen::VectorXd& displacement() const { return states_.back().u; }
+  double deflection() const { return states_.back().deflection; }
+
+ private:
+  struct State {
+    double deflection;
+    Eigen::VectorXd u;
+  };
+  Eigen::VectorXd predict(double deflection) const;
+  const State& nearest(double deflection) const;
+
+  NewtonSolver& newton_;
+  WinklerContactForm& contact_;
+  ContactSettings settings_;
+  std::vector<State> states_;  // converged; the last one is the current state
+};
+
+}  // namespace tirefem

@@ -1,0 +1,291 @@
+#include "tirefem/analysis/footprint.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "tirefem/analysis/contact_iteration.hpp"
+#include "tirefem/forms/pressure_form.hpp"
+#include "tirefem/forms/shell_internal_force.hpp"
+
+namespace tirefem {
+
+std::vector<TreadPoint> tyre_tread_points(const TyreMesh& tm, const TyreDescription& tyre, int quadrature) {
+  const ShellMesh& m = tm.mesh;
+  std::vector<int> elements;
+  for (int e = 0; e < m.element_count(); ++e) {
+    const int jv = e / m.u_elements();
+    const double phi = 0.5 * (m.v_values[jv] + m.v_values[jv + 1]);
+    if (std::abs(tm.element_s[e]) < tyre.tread_end_s && std::abs(phi) <= 0.5 * std::numbers::pi)
+      elements.push_back(e);
+  }
+  return make_tread_points(m, elements, quadrature, [&tyre](double s) {
+    return std::abs(s) <= tyre.tread_end_s ? tread_height_at(tyre, s) : -1.0;
+  });
+}
+
+namespace {
+
+// Extent of the contact along lines of tread points (sorted by the other parameter), each end
+// interpolated linearly in the penetration to g = 0 between the last point in contact and the next one.
+// Returns the largest (max − min) of `coordinate` over the lines.
+template <class LineKey, class Order>
+std::pair<double, double> contact_extent(const std::vector<TreadPoint>& points,
+                                         const std::vector<TreadPointState>& states, LineKey key, Order order,
+                                         int coordinate) {
+  std::map<double, std::vector<int>> lines;
+  for (int q = 0; q < static_cast<int>(points.size()); ++q) lines[key(points[q])].push_back(q);
+  double lo = 1e300, hi = -1e300;
+  for (auto& [k, line] : lines) {
+    std::sort(line.begin(), line.end(), [&](int a, int b) { return order(points[a]) < order(points[b]); });
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      const TreadPointState& s = states[line[i]];
+      if (s.penetration <= 0) continue;
+      double c = s.position[coordinate];
+      lo = std::min(lo, c), hi = std::max(hi, c);
+      for (int dir : {-1, 1}) {  // edge towards a neighbour out of contact
+        const long j = static_cast<long>(i) + dir;
+        if (j < 0 || j >= static_cast<long>(line.size())) continue;
+        const TreadPointState& n = states[line[j]];
+        if (n.penetration > 0) continue;
+        const double t = s.penetration / (s.penetration - n.penetration);
+        const double edge = c + t * (n.position[coordinate] - c);
+        lo = std::min(lo, edge), hi = std::max(hi, edge);
+      }
+    }
+  }
+  return {lo, hi};
+}
+
+}  // namespace
+
+PatchFigures patch_figures(const std::vector<TreadPoint>& points, const std::vector<TreadPointState>& states,
+                           bool half_model) {
+  PatchFigures f;
+  double pressure_integral = 0.0;
+  for (std::size_t q = 0; q < points.size(); ++q) {
+    if (states[q].pressure <= 0) continue;
+    f.force_N += states[q].force;
+    f.contact_area_mm2 += points[q].weight;
+    pressure_integral += states[q].pressure * points[q].weight;
+    f.max_pressure_MPa = std::max(f.max_pressure_MPa, states[q].pressure);
+  }
+  if (f.contact_area_mm2 == 0.0) return f;
+  f.mean_pressure_MPa = pressure_integral / f.contact_area_mm2;
+  // Lines of constant s give the length (along y), lines of constant φ the width (along x).
+  const auto [y_lo, y_hi] = contact_extent(
+      points, states, [](const TreadPoint& p) { return p.u; }, [](const TreadPoint& p) { return p.v; }, 1);
+  const auto [x_lo, x_hi] = contact_extent(
+      points, states, [](const TreadPoint& p) { return p.v; }, [](const TreadPoint& p) { return p.u; }, 0);
+  f.patch_length_mm = y_hi - y_lo;
+  f.patch_width_mm = half_model ? 2.0 * std::max(x_hi, 0.0) : x_hi - x_lo;
+  if (half_model) {
+    // Mirror image in x = 0: the lateral force cancels, the others double.
+    f.force_N *= 2.0;
+    f.force_N.x() = 0.0;
+    f.contact_area_mm2 *= 2.0;
+  }
+  f.Qz_N = f.force_N.z();
+  return f;
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// Inflated tyre + contact: the forms, the Newton solver and the deflection path over them.
+class StaticContactRun {
+ public:
+  StaticContactRun(const TyreMesh& tm, const TyreDescription& tyre, const InflationSettings& inflation,
+                   const ContactSettings& settings, const SupportDescription& support_description,
+                   Kinematics kinematics, StaticContactResult& result, const ProgressSink& progress)
+      : tm_(tm), settings_(settings), result_(result), progress_(progress),
+        support_(make_support(support_description)) {
+    InflationSettings inflate = inflation;
+    inflate.linear = kinematics == Kinematics::linear;
+    result_.inflation = run_inflation(tm, inflate, progress);
+    if (!result_.inflation.converged) throw std::runtime_error("inflation did not converge");
+    result_.tread_points = tyre_tread_points(tm, tyre, settings.quadrature);
+
+    DofMap dofs(tm.mesh.dof_count());
+    dofs.fix(tm.fixed_dofs);
+    std::vector<std::unique_ptr<Form>> forms;
+    forms.push_back(std::make_unique<ShellInternalForce>(tm.mesh, tm.sections, kinematics));
+    forms.push_back(std::make_unique<PressureForm>(tm.mesh, tm.pressure_elements, inflation.pressure,
+                                                   kinematics, /*symmetrize=*/true));
+    auto contact = std::make_unique<WinklerContactForm>(tm.mesh, result_.tread_points,
+                                                        tyre.tread_stiffness, *support_);
+    contact_ = contact.get();
+    forms.push_back(std::move(contact));
+    problem_ = std::make_unique<NonlinearProblem>(std::move(dofs), std::move(forms));
+    problem_->load_scale();  // the inflation load (no contact at δz = 0, u = 0) sets the residual scale
+    NewtonSettings ns;
+    ns.max_iterations = settings.max_newton_iterations;
+    ns.residual_tolerance = settings.residual_tolerance;
+    ns.reuse_factorization = true;
+    newton_ = std::make_unique<NewtonSolver>(*problem_, ns);
+    path_ = std::make_unique<DeflectionPath>(*newton_, *contact_, settings, result_.inflation.displacement);
+    record(0.0, DeflectionPath::Step{true, 0, 0, {true, 0, 0, 0, {}}, 0, {}}, 0.0, 0);
+  }
+
+  // Solves at δz and records the load point; false (and result_.failure) when it does not converge.
+  bool solve_at(double deflection) {
+    const auto t0 = Clock::now();
+    const int factorizations_before = newton_->linear_stats().factorizations;
+    const DeflectionPath::Step step = path_->advance_to(deflection);
+    if (!step.converged) {
+      result_.failure = step.failure;
+      return false;
+    }
+    record(deflection, step, seconds_since(t0), newton_->linear_stats().factorizations - factorizations_before);
+    const LoadPoint& p = result_.points.back();
+    if (progress_)
+      progress_(fmt::format("  δz {:6.2f} mm: Qz {:8.1f} N, patch {:5.1f} × {:5.1f} mm, pmax {:.3f} MPa "
+                            "({} contact, {} Newton iterations{}, {:.2f} s)",
+                            deflection, p.patch.Qz_N, p.patch.patch_length_mm, p.patch.patch_width_mm,
+                            p.patch.max_pressure_MPa, p.contact_iterations, p.newton_iterations,
+                            step.cutbacks ? fmt::format(", {} cut-backs", step.cutbacks) : "", p.time_s));
+    return true;
+  }
+
+  void finish() {
+    result_.final_state.deflection_mm = path_->deflection();
+    result_.final_state.displacement = path_->displacement();
+    contact_->set_deflection(path_->deflection());
+    result_.final_state.tread = contact_->evaluate(path_->displacement());
+    SolveCounters& c = result_.counters;
+    c.load_steps = static_cast<int>(result_.points.size()) - 1;
+    c.newton_iterations = newton_->total_iterations();
+    c.factorizations = newton_->linear_stats().factorizations;
+    c.analysis_s = newton_->linear_stats().analysis_s;
+    c.factorization_s = newton_->linear_stats().factorization_s;
+    c.solve_s = newton_->linear_stats().solve_s;
+    c.used_lu = newton_->linear_stats().used_lu;
+    c.krylov_solves = newton_->linear_stats().krylov_solves;
+    c.krylov_failures = newton_->linear_stats().krylov_failures;
+    c.krylov_iterations = newton_->linear_stats().krylov_iterations;
+    c.krylov_s = newton_->linear_stats().krylov_s;
+    c.assemblies = problem_->stats().assemblies;
+    c.assembly_s = problem_->stats().assembly_s;
+  }
+
+  double last_Qz() const { return result_.points.back().patch.Qz_N; }
+
+ private:
+  void record(double deflection, const DeflectionPath::Step& step, double time, int factorizations) {
+    LoadPoint p;
+    p.deflection_mm = deflection;
+    contact_->set_deflection(deflection);
+    p.patch = patch_figures(result_.tread_points, contact_->evaluate(path_->displacement()), tm_.half_model);
+    p.contact_iterations = step.last.contact_iterations;
+    p.newton_iterations = step.newton_iterations;
+    p.factorizations = factorizations;
+    p.increments = step.increments;
+    p.time_s = time;
+    result_.points.push_back(p);
+    result_.counters.cutbacks += step.cutbacks;
+  }
+
+  const TyreMesh& tm_;
+  ContactSettings settings_;
+  StaticContactResult& result_;
+  ProgressSink progress_;
+  std::unique_ptr<SupportSurface> support_;
+  WinklerContactForm* contact_ = nullptr;
+  std::unique_ptr<NonlinearProblem> problem_;
+  std::unique_ptr<NewtonSolver> newton_;
+  std::unique_ptr<DeflectionPath> path_;
+};
+
+std::string support_label(const SupportDescription& s) {
+  return s.kind == SupportDescription::Kind::drum ? fmt::format("drum of {} mm", s.drum_diameter)
+                                                   : support_kind_name(s.kind);
+}
+
+}  // namespace
+
+StaticContactResult run_load_curve(const TyreMesh& tm, const TyreDescription& tyre,
+                                   const InflationSettings& inflation, const ContactSettings& contact,
+                                   const LoadCurveStudy& study, const ProgressSink& progress) {
+  const auto t0 = Clock::now();
+  StaticContactResult result;
+  result.name = study.name;
+  result.support = study.support;
+  result.kinematics = study.linear ? Kinematics::linear : Kinematics::nonlinear;
+  result.iteration = contact.iteration;
+  if (progress)
+    progress(fmt::format("load curve '{}': {}, {} theory, δz to {} mm in {} steps", study.name,
+                         support_label(study.support), study.linear ? "linear" : "nonlinear",
+                         study.max_deflection, study.points));
+  StaticContactRun run(tm, tyre, inflation, contact, study.support, result.kinematics, result, progress);
+  bool ok = true;
+  for (int k = 1; k <= study.points && ok; ++k) ok = run.solve_at(study.max_deflection * k / study.points);
+  run.finish();
+  result.completed = ok;
+  result.counters.wall_s = seconds_since(t0);
+  return result;
+}
+
+StaticContactResult run_footprint(const TyreMesh& tm, const TyreDescription& tyre,
+                                  const InflationSettings& inflation, const ContactSettings& contact,
+                                  const FootprintStudy& study, const ProgressSink& progress) {
+  const auto t0 = Clock::now();
+  StaticContactResult result;
+  result.name = study.name;
+  result.support = study.support;
+  result.kinematics = study.linear ? Kinematics::linear : Kinematics::nonlinear;
+  result.iteration = contact.iteration;
+  result.target_Qz_N = study.target_load;
+  if (progress)
+    progress(fmt::format("footprint '{}': {}, {} theory, Qz = {} N", study.name, support_label(study.support),
+                         study.linear ? "linear" : "nonlinear", study.target_load));
+  StaticContactRun run(tm, tyre, inflation, contact, study.support, result.kinematics, result, progress);
+  // Secant steps in δz towards the target load (at most kMaxStep per step while below it), then the
+  // Illinois variant of regula falsi inside the bracket. Every state tried is a converged load point.
+  constexpr double kFirstStep = 5.0, kMaxStep = 10.0;
+  const double target = study.target_load, tolerance = study.load_tolerance * study.target_load;
+  double lo = 0.0, q_lo = 0.0;     // below the target
+  double hi = -1.0, q_hi = 0.0;    // above it, once found
+  int lo_side_repeats = 0, hi_side_repeats = 0;
+  double next = kFirstStep;
+  bool ok = false;
+  for (int evaluation = 0; evaluation < 40; ++evaluation) {
+    if (!run.solve_at(next)) break;
+    const double q = run.last_Qz();
+    if (std::abs(q - target) <= tolerance) {
+      ok = true;
+      break;
+    }
+    if (q < target) {
+      lo = next, q_lo = q, ++lo_side_repeats, hi_side_repeats = 0;
+    } else {
+      hi = next, q_hi = q, ++hi_side_repeats, lo_side_repeats = 0;
+    }
+    if (hi < 0) {
+      // Not bracketed yet: secant through the last two points below the target.
+      const auto& pts = result.points;
+      const LoadPoint& a = pts[pts.size() - 2];
+      const double slope = (q - a.patch.Qz_N) / (next - a.deflection_mm);
+      const double guess = slope > 0 ? next + (target - q) / slope : next + kMaxStep;
+      next = std::min(std::max(guess, next + 0.5), next + kMaxStep);
+    } else {
+      // Illinois: halve the stale end's residual when the same end moves twice in a row.
+      const double f_lo = (q_lo - target) * (hi_side_repeats >= 2 ? 0.5 : 1.0);
+      const double f_hi = (q_hi - target) * (lo_side_repeats >= 2 ? 0.5 : 1.0);
+      next = lo - f_lo * (hi - lo) / (f_hi - f_lo);
+    }
+  }
+  if (!ok && result.failure.empty())
+    result.failure = fmt::format("Qz = {} N not reached within 40 load points", target);
+  run.finish();
+  result.completed = ok;
+  result.counters.wall_s = seconds_since(t0);
+  return result;
+}
+
+}  // namespace tirefem

@@ -1,0 +1,75 @@
+#pragma once
+// Static loading of the inflated tyre by a rigid support (MODEL.md §4): the support is moved towards the
+// fixed axle by δz; each load point is solved by the two-level iteration (outer loop: contact region,
+// eq. 5; inner loop: Newton with the region frozen, eq. 13) or by the single-loop variant. Load curves
+// step δz in equal steps (eq. 14 gives Qz); a footprint study finds δz for a target Qz.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tirefem/analysis/inflation.hpp"
+#include "tirefem/forms/winkler_contact_form.hpp"
+
+namespace tirefem {
+
+// Patch figures of the full tyre (a half model's are doubled / mirrored).
+struct PatchFigures {
+  double Qz_N = 0.0;               // vertical force of the support on the tyre (= axle load)
+  Eigen::Vector3d force_N = Eigen::Vector3d::Zero();  // total contact force on the tyre
+  double contact_area_mm2 = 0.0;   // breaker-face area with qn > 0
+  double patch_length_mm = 0.0;    // extent along y (travel) of the contact, interpolated to qn = 0
+  double patch_width_mm = 0.0;     // extent along x (lateral), interpolated to qn = 0
+  double max_pressure_MPa = 0.0;
+  double mean_pressure_MPa = 0.0;  // ∫ qn dΩ / contact area
+};
+
+PatchFigures patch_figures(const std::vector<TreadPoint>& points, const std::vector<TreadPointState>& states,
+                           bool half_model);
+
+struct LoadPoint {
+  double deflection_mm = 0.0;
+  PatchFigures patch;
+  int contact_iterations = 0;  // outer iterations (Newton solves) of the last increment to this point
+  int newton_iterations = 0;   // Newton iterations (linear solves) of all increments to this point
+  int factorizations = 0;
+  int increments = 0;          // > 1 when the step was cut back
+  double time_s = 0.0;
+};
+
+// The converged state at one deflection, with what the reports need.
+struct ContactState {
+  double deflection_mm = 0.0;
+  Eigen::VectorXd displacement;
+  std::vector<TreadPointState> tread;
+};
+
+struct StaticContactResult {
+  std::string name;
+  SupportDescription support;
+  Kinematics kinematics = Kinematics::nonlinear;
+  ContactSettings::Iteration iteration = ContactSettings::Iteration::two_level;
+  bool completed = false;
+  std::string failure;               // why it stopped, when not completed
+  std::vector<LoadPoint> points;     // converged points only, the unloaded one first
+  std::vector<TreadPoint> tread_points;
+  ContactState final_state;          // at the last converged point
+  InflationResult inflation;         // the state the loading started from
+  std::optional<double> target_Qz_N; // footprint studies
+  SolveCounters counters;            // contact phase only
+};
+
+// Inflates (theory of the study) and runs the load curve.
+StaticContactResult run_load_curve(const TyreMesh& tyre_mesh, const TyreDescription& tyre,
+                                   const InflationSettings& inflation, const ContactSettings& contact,
+                                   const LoadCurveStudy& study, const ProgressSink& progress = {});
+// Inflates and finds δz with Qz = target (points: the deflections tried on the way, all converged).
+StaticContactResult run_footprint(const TyreMesh& tyre_mesh, const TyreDescription& tyre,
+                                  const InflationSettings& inflation, const ContactSettings& contact,
+                                  const FootprintStudy& study, const ProgressSink& progress = {});
+
+// The tread points of a tyre mesh: elements within the tread (|s| ≤ tread end) on the lower half of the
+// tyre (|φ| ≤ 90°, the only part a support within the 40 mm range can reach), hp from the tread table.
+std::vector<TreadPoint> tyre_tread_points(const TyreMesh& tyre_mesh, const TyreDescription& tyre,
+                                          int quadrature);
+
+}  // namespace tirefem

@@ -1,0 +1,560 @@
+#include "tirefem/results/footprint_report.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+#include "tirefem/results/inflation_report.hpp"
+#include "tirefem/road/support_surface.hpp"
+
+namespace tirefem {
+namespace {
+
+constexpr double kDeg = 180.0 / std::numbers::pi;
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+const char* iteration_name(ContactSettings::Iteration it) {
+  return it == ContactSettings::Iteration::two_level ? "two_level" : "single_loop";
+}
+
+std::string support_description(const SupportDescription& s) {
+  switch (s.kind) {
+    case SupportDescription::Kind::plane:
+      return "road plane";
+    case SupportDescription::Kind::drum:
+      return fmt::format("test drum, diameter {:g} mm", s.drum_diameter);
+    case SupportDescription::Kind::surface: {
+      std::string f;
+      for (const auto& t : s.terms)
+        f += fmt::format("{}{:g} x^{} y^{}", f.empty() ? "" : " + ", t.coefficient, t.x_power, t.y_power);
+      return "road surface z = " + (f.empty() ? std::string("0") : f) + " (mm)";
+    }
+  }
+  return "?";
+}
+
+// Sorted distinct values; values closer than a relative 1e-9 count as one (the tread points' parameters
+// are bit-identical along a grid line, the tolerance only guards against other producers).
+std::vector<double> distinct(std::vector<double> values, double& tolerance) {
+  std::sort(values.begin(), values.end());
+  double scale = 1.0;
+  for (double x : values) scale = std::max(scale, std::abs(x));
+  tolerance = 1e-9 * scale;
+  std::vector<double> out;
+  for (double x : values)
+    if (out.empty() || x - out.back() > tolerance) out.push_back(x);
+  return out;
+}
+
+int index_of(const std::vector<double>& sorted, double x, double tolerance) {
+  const auto it = std::lower_bound(sorted.begin(), sorted.end(), x - tolerance);
+  if (it == sorted.end() || *it > x + tolerance) throw std::logic_error("tread grid: value not found");
+  return static_cast<int>(it - sorted.begin());
+}
+
+// The tread points of a result as a structured grid over (u, v) = (s, φ); in a half model the columns
+// with s > 0 also appear mirrored (s → −s, x → −x), first, so the grid spans the whole patch.
+struct TreadGrid {
+  std::vector<double> u, v;    // column and row parameters, increasing
+  std::vector<char> mirrored;  // per column
+  std::vector<int> point;      // [j * nu + i]: tread point index, −1 = none
+  bool half_model = false;
+
+  int nu() const { return static_cast<int>(u.size()); }
+  int nv() const { return static_cast<int>(v.size()); }
+  int at(int i, int j) const { return point[static_cast<std::size_t>(j) * u.size() + i]; }
+};
+
+TreadGrid tread_grid(const StaticContactResult& r) {
+  const auto& pts = r.tread_points;
+  if (pts.empty()) throw std::invalid_argument(fmt::format("contact result '{}': no tread points", r.name));
+  if (r.final_state.tread.size() != pts.size())
+    throw std::invalid_argument(fmt::format("contact result '{}': {} tread point states for {} tread points",
+                                            r.name, r.final_state.tread.size(), pts.size()));
+  std::vector<double> us, vs;
+  for (const TreadPoint& p : pts) us.push_back(p.u), vs.push_back(p.v);
+  double tol_u = 0.0, tol_v = 0.0;
+  us = distinct(us, tol_u);
+  vs = distinct(vs, tol_v);
+  TreadGrid g;
+  g.half_model = us.front() >= -tol_u;  // a full model has tread on both sides of the equator
+  const int n0 = static_cast<int>(us.size());
+  std::vector<int> column(n0), mirror_column(n0, -1);
+  if (g.half_model)
+    for (int k = n0 - 1; k >= 0; --k)
+      if (us[k] > tol_u) {
+        mirror_column[k] = g.nu();
+        g.u.push_back(-us[k]);
+        g.mirrored.push_back(1);
+      }
+  for (int k = 0; k < n0; ++k) {
+    column[k] = g.nu();
+    g.u.push_back(us[k]);
+    g.mirrored.push_back(0);
+  }
+  g.v = vs;
+  g.point.assign(static_cast<std::size_t>(g.nu()) * g.nv(), -1);
+  for (int n = 0; n < static_cast<int>(pts.size()); ++n) {
+    const int k = index_of(us, pts[n].u, tol_u), j = index_of(vs, pts[n].v, tol_v);
+    g.point[static_cast<std::size_t>(j) * g.nu() + column[k]] = n;
+    if (mirror_column[k] >= 0) g.point[static_cast<std::size_t>(j) * g.nu() + mirror_column[k]] = n;
+  }
+  return g;
+}
+
+Eigen::Vector3d grid_position(const TreadGrid& g, const std::vector<TreadPointState>& states, int i, int j) {
+  Eigen::Vector3d x = states[g.at(i, j)].position;
+  if (g.mirrored[i]) x.x() = -x.x();
+  return x;
+}
+
+// Points that define the patch: qn > 0, or (no contact at all) those of largest penetration.
+std::vector<char> patch_points(const std::vector<TreadPointState>& states) {
+  std::vector<char> active(states.size(), 0);
+  bool any = false;
+  double g_max = -std::numeric_limits<double>::infinity();
+  for (std::size_t n = 0; n < states.size(); ++n) {
+    if (states[n].pressure > 0) active[n] = 1, any = true;
+    g_max = std::max(g_max, states[n].penetration);
+  }
+  if (!any)
+    for (std::size_t n = 0; n < states.size(); ++n) active[n] = states[n].penetration >= g_max;
+  return active;
+}
+
+struct Window {
+  int i0, i1, j0, j1;  // inclusive grid index ranges
+};
+
+Window patch_window(const TreadGrid& g, const std::vector<TreadPointState>& states, int margin) {
+  const std::vector<char> active = patch_points(states);
+  Window w{g.nu(), -1, g.nv(), -1};
+  for (int j = 0; j < g.nv(); ++j)
+    for (int i = 0; i < g.nu(); ++i) {
+      const int n = g.at(i, j);
+      if (n < 0 || !active[n]) continue;
+      w.i0 = std::min(w.i0, i), w.i1 = std::max(w.i1, i);
+      w.j0 = std::min(w.j0, j), w.j1 = std::max(w.j1, j);
+    }
+  w.i0 = std::max(0, w.i0 - margin), w.i1 = std::min(g.nu() - 1, w.i1 + margin);
+  w.j0 = std::max(0, w.j0 - margin), w.j1 = std::min(g.nv() - 1, w.j1 + margin);
+  return w;
+}
+
+// (ξ, η) ∈ [0, 1]² with X = P0 (1−ξ)(1−η) + P1 ξ (1−η) + P2 ξ η + P3 (1−ξ) η, by Newton's method;
+// false when X lies outside the quadrilateral (or it is degenerate).
+bool inverse_bilinear(const std::array<Eigen::Vector2d, 4>& P, const Eigen::Vector2d& X, double& xi,
+                      double& eta) {
+  xi = eta = 0.5;
+  const double size = (P[2] - P[0]).norm() + (P[3] - P[1]).norm();
+  for (int it = 0; it < 30; ++it) {
+    const Eigen::Vector2d F =
+        P[0] * (1 - xi) * (1 - eta) + P[1] * xi * (1 - eta) + P[2] * xi * eta + P[3] * (1 - xi) * eta - X;
+    Eigen::Matrix2d J;
+    J.col(0) = (P[1] - P[0]) * (1 - eta) + (P[2] - P[3]) * eta;
+    J.col(1) = (P[3] - P[0]) * (1 - xi) + (P[2] - P[1]) * xi;
+    const double det = J.determinant();
+    if (!(std::abs(det) > 1e-12 * size * size)) return false;
+    const Eigen::Vector2d d = J.inverse() * F;
+    xi -= d[0], eta -= d[1];
+    if (std::abs(xi) > 10 || std::abs(eta) > 10) return false;
+    if (d.norm() < 1e-13) break;
+  }
+  constexpr double tol = 1e-9;
+  return xi >= -tol && xi <= 1 + tol && eta >= -tol && eta <= 1 + tol;
+}
+
+int column(const CsvTable& t, const std::string& name) {
+  const auto it = std::find(t.columns.begin(), t.columns.end(), name);
+  if (it == t.columns.end()) throw std::invalid_argument("table has no column '" + name + "'");
+  return static_cast<int>(it - t.columns.begin());
+}
+
+std::vector<double> column_values(const CsvTable& t, int c) {
+  std::vector<double> v;
+  for (const auto& row : t.rows) v.push_back(row[c]);
+  return v;
+}
+
+std::string strip_suffix(const std::string& name, const std::string& suffix) {
+  return name.ends_with(suffix) ? name.substr(0, name.size() - suffix.size()) : name;
+}
+
+void insert_study(toml::table& t, const StaticContactResult& r) {
+  t.insert("name", r.name);
+  t.insert("support", support_kind_name(r.support.kind));
+  if (r.support.kind == SupportDescription::Kind::drum) t.insert("drum_diameter_mm", r.support.drum_diameter);
+  t.insert("theory", theory_label(r.kinematics));
+  t.insert("iteration", iteration_name(r.iteration));
+  t.insert("completed", r.completed);
+  if (!r.completed) t.insert("failure", r.failure);
+}
+
+void insert_patch(toml::table& t, const LoadPoint& p) {
+  t.insert("deflection_mm", p.deflection_mm);
+  t.insert("Qz_N", p.patch.Qz_N);
+  t.insert("contact_area_mm2", p.patch.contact_area_mm2);
+  t.insert("patch_length_mm", p.patch.patch_length_mm);
+  t.insert("patch_width_mm", p.patch.patch_width_mm);
+  t.insert("max_pressure_MPa", p.patch.max_pressure_MPa);
+  t.insert("mean_pressure_MPa", p.patch.mean_pressure_MPa);
+}
+
+}  // namespace
+
+std::string support_label(const SupportDescription& support) {
+  if (support.kind == SupportDescription::Kind::drum)
+    return fmt::format("drum {:g} mm", support.drum_diameter);
+  return support_kind_name(support.kind);
+}
+
+std::string theory_label(Kinematics kinematics) {
+  return kinematics == Kinematics::linear ? "linear" : "nonlinear";
+}
+
+CsvTable load_curve_table(const StaticContactResult& r) {
+  CsvTable t;
+  t.comments = {
+      r.target_Qz_N ? fmt::format("tirefem: footprint '{}' at Qz = {:g} N (the deflections tried on the way)",
+                                  r.name, *r.target_Qz_N)
+                    : fmt::format("tirefem: load curve '{}'", r.name),
+      "support: " + support_description(r.support),
+      fmt::format("theory: {}; contact iteration: {}", theory_label(r.kinematics),
+                  iteration_name(r.iteration)),
+      r.completed ? std::string("completed")
+                  : "stopped early" + (r.failure.empty() ? std::string() : ": " + r.failure),
+      "Qz and the patch figures are of the full tyre; pressure = contact pressure qn of the tread",
+      "contact_iterations: outer iterations of the last increment; newton_iterations, factorizations, "
+      "increments, time_s: all increments to the point"};
+  t.columns = {"deflection_mm",     "Qz_N",
+               "contact_area_mm2",  "patch_length_mm",
+               "patch_width_mm",    "max_pressure_MPa",
+               "mean_pressure_MPa", "contact_iterations",
+               "newton_iterations", "factorizations",
+               "increments",        "time_s"};
+  for (const LoadPoint& p : r.points)
+    t.rows.push_back({p.deflection_mm, p.patch.Qz_N, p.patch.contact_area_mm2, p.patch.patch_length_mm,
+                      p.patch.patch_width_mm, p.patch.max_pressure_MPa, p.patch.mean_pressure_MPa,
+                      static_cast<double>(p.contact_iterations), static_cast<double>(p.newton_iterations),
+                      static_cast<double>(p.factorizations), static_cast<double>(p.increments), p.time_s});
+  return t;
+}
+
+Plot load_characteristic_plot(const std::vector<const StaticContactResult*>& curves) {
+  Plot plot{"Load characteristic", "deflection δz [mm]", "vertical load Qz [N]", {}};
+  std::vector<std::string> titles;
+  for (const StaticContactResult* r : curves)
+    if (r) titles.push_back(support_label(r->support) + ", " + theory_label(r->kinematics));
+  std::size_t k = 0;
+  for (const StaticContactResult* r : curves) {
+    if (!r) continue;
+    PlotSeries s;
+    s.title = titles[k];
+    if (std::count(titles.begin(), titles.end(), titles[k]) > 1) s.title += " (" + r->name + ")";
+    for (const LoadPoint& p : r->points) s.x.push_back(p.deflection_mm), s.y.push_back(p.patch.Qz_N);
+    plot.series.push_back(std::move(s));
+    ++k;
+  }
+  return plot;
+}
+
+CsvTable tread_points_table(const StaticContactResult& r) {
+  const TreadGrid g = tread_grid(r);
+  const auto& states = r.final_state.tread;
+  const Window w = patch_window(g, states, kPatchMarginPoints);
+  CsvTable t;
+  t.comments = {
+      fmt::format("tirefem: tread points of '{}' at deflection {:g} mm", r.name, r.final_state.deflection_mm),
+      fmt::format("window: the contact (qn > 0) plus {} rows / columns of tread points; the "
+                  "model's own points (a half model is not mirrored)",
+                  kPatchMarginPoints),
+      "s from the equator along the meridian; phi = 0 at the bottom; x y z: current position of "
+      "the tread point (tread surface); penetration g > 0 inside the support"};
+  t.columns = {"s_mm", "phi_deg", "x_mm", "y_mm", "z_mm", "penetration_mm", "pressure_MPa"};
+  for (int j = w.j0; j <= w.j1; ++j)
+    for (int i = w.i0; i <= w.i1; ++i) {
+      const int n = g.at(i, j);
+      if (n < 0 || g.mirrored[i]) continue;
+      const TreadPointState& s = states[n];
+      t.rows.push_back({r.tread_points[n].u, r.tread_points[n].v * kDeg, s.position.x(), s.position.y(),
+                        s.position.z(), s.penetration, s.pressure});
+    }
+  return t;
+}
+
+HeatMap pressure_map_s_phi(const StaticContactResult& r) {
+  const TreadGrid g = tread_grid(r);
+  const auto& states = r.final_state.tread;
+  const Window w = patch_window(g, states, kPatchMarginPoints);
+  HeatMap m;
+  m.title = fmt::format("{}: contact pressure at δz = {:.2f} mm ({}, {})", r.name,
+                        r.final_state.deflection_mm, support_label(r.support), theory_label(r.kinematics));
+  m.x_label = "s from the equator [mm]";
+  m.y_label = "φ [deg]";
+  m.value_label = "contact pressure [MPa]";
+  for (int i = w.i0; i <= w.i1; ++i) m.x.push_back(g.u[i]);
+  for (int j = w.j0; j <= w.j1; ++j) m.y.push_back(g.v[j] * kDeg);
+  for (int j = w.j0; j <= w.j1; ++j) {
+    std::vector<double> row;
+    for (int i = w.i0; i <= w.i1; ++i) {
+      const int n = g.at(i, j);
+      row.push_back(n < 0 ? 0.0 : states[n].pressure);
+    }
+    m.values.push_back(std::move(row));
+  }
+  return m;
+}
+
+HeatMap footprint_map_xy(const StaticContactResult& r, double cell_mm) {
+  if (!(cell_mm > 0)) throw std::invalid_argument(fmt::format("footprint map: cell size {} mm", cell_mm));
+  const TreadGrid g = tread_grid(r);
+  const auto& states = r.final_state.tread;
+  // Window: extent of the patch points in (x, y), plus the margin, rounded out to multiples of the cell.
+  const std::vector<char> active = patch_points(states);
+  double x_min = std::numeric_limits<double>::infinity(), x_max = -x_min, y_min = x_min, y_max = -x_min;
+  for (int j = 0; j < g.nv(); ++j)
+    for (int i = 0; i < g.nu(); ++i) {
+      const int n = g.at(i, j);
+      if (n < 0 || !active[n]) continue;
+      const Eigen::Vector3d x = grid_position(g, states, i, j);
+      x_min = std::min(x_min, x.x()), x_max = std::max(x_max, x.x());
+      y_min = std::min(y_min, x.y()), y_max = std::max(y_max, x.y());
+    }
+  const auto first_node = [&](double lo) { return std::floor((lo - kFootprintMarginMm) / cell_mm); };
+  const auto last_node = [&](double hi) { return std::ceil((hi + kFootprintMarginMm) / cell_mm); };
+  const double lo_x = first_node(x_min) * cell_mm, lo_y = first_node(y_min) * cell_mm;
+  const int nx = static_cast<int>(last_node(x_max) - first_node(x_min)) + 1;
+  const int ny = static_cast<int>(last_node(y_max) - first_node(y_min)) + 1;
+  HeatMap m;
+  m.title = fmt::format("{}: footprint at δz = {:.2f} mm ({}, {})", r.name, r.final_state.deflection_mm,
+                        support_label(r.support), theory_label(r.kinematics));
+  m.x_label = "x lateral [mm]";
+  m.y_label = "y direction of travel [mm]";
+  m.value_label = "contact pressure [MPa]";
+  m.equal_axes = true;
+  for (int k = 0; k < nx; ++k) m.x.push_back(lo_x + k * cell_mm);
+  for (int k = 0; k < ny; ++k) m.y.push_back(lo_y + k * cell_mm);
+  m.values.assign(ny, std::vector<double>(nx, 0.0));
+  std::vector<char> done(static_cast<std::size_t>(nx) * ny, 0);
+  const double hi_x = m.x.back(), hi_y = m.y.back();
+  for (int j = 0; j + 1 < g.nv(); ++j)
+    for (int i = 0; i + 1 < g.nu(); ++i) {
+      const std::array<std::array<int, 2>, 4> corners{{{i, j}, {i + 1, j}, {i + 1, j + 1}, {i, j + 1}}};
+      std::array<Eigen::Vector2d, 4> P;
+      std::array<double, 4> q{};
+      bool complete = true, loaded = false;
+      for (int a = 0; a < 4; ++a) {
+        const int n = g.at(corners[a][0], corners[a][1]);
+        if (n < 0) {
+          complete = false;
+          break;
+        }
+        P[a] = grid_position(g, states, corners[a][0], corners[a][1]).head<2>();
+        q[a] = states[n].pressure;
+        loaded = loaded || q[a] != 0.0;
+      }
+      if (!complete || !loaded) continue;  // nodes of unloaded cells keep their 0
+      double bx0 = P[0].x(), bx1 = bx0, by0 = P[0].y(), by1 = by0;
+      for (const auto& p : P) {
+        bx0 = std::min(bx0, p.x()), bx1 = std::max(bx1, p.x());
+        by0 = std::min(by0, p.y()), by1 = std::max(by1, p.y());
+      }
+      if (bx1 < lo_x || bx0 > hi_x || by1 < lo_y || by0 > hi_y) continue;
+      const int kx0 = std::max(0, static_cast<int>(std::ceil((bx0 - lo_x) / cell_mm - 1e-9)));
+      const int kx1 = std::min(nx - 1, static_cast<int>(std::floor((bx1 - lo_x) / cell_mm + 1e-9)));
+      const int ky0 = std::max(0, static_cast<int>(std::ceil((by0 - lo_y) / cell_mm - 1e-9)));
+      const int ky1 = std::min(ny - 1, static_cast<int>(std::floor((by1 - lo_y) / cell_mm + 1e-9)));
+      for (int ky = ky0; ky <= ky1; ++ky)
+        for (int kx = kx0; kx <= kx1; ++kx) {
+          char& d = done[static_cast<std::size_t>(ky) * nx + kx];
+          double xi = 0, eta = 0;
+          if (d || !inverse_bilinear(P, Eigen::Vector2d(m.x[kx], m.y[ky]), xi, eta)) continue;
+          xi = std::clamp(xi, 0.0, 1.0), eta = std::clamp(eta, 0.0, 1.0);
+          m.values[ky][kx] =
+              q[0] * (1 - xi) * (1 - eta) + q[1] * xi * (1 - eta) + q[2] * xi * eta + q[3] * (1 - xi) * eta;
+          d = 1;
+        }
+    }
+  return m;
+}
+
+CsvTable circumferential_belt_table(
+    const TyreMesh& tm, const TyreDescription& tyre,
+    const std::vector<std::pair<std::string, const std::vector<ElementResult>*>>& states) {
+  const ShellMesh& m = tm.mesh;
+  for (const auto& [name, elements] : states)
+    if (!elements || static_cast<int>(elements->size()) != m.element_count())
+      throw std::invalid_argument(
+          fmt::format("circumferential belt table: state '{}' has {} element results "
+                      "for {} elements",
+                      name, elements ? elements->size() : 0, m.element_count()));
+  // Equatorial column: |s| smallest, a tie (full model: ±s) going to s > 0.
+  int col = 0;
+  for (int i = 1; i < m.u_elements(); ++i) {
+    const double s = tm.element_s[m.element_index(i, 0)], best = tm.element_s[m.element_index(col, 0)];
+    const double tol = 1e-9 * (1.0 + std::abs(best));
+    if (std::abs(s) < std::abs(best) - tol || (std::abs(std::abs(s) - std::abs(best)) <= tol && s > best))
+      col = i;
+  }
+  const int zone = tm.element_zone[m.element_index(col, 0)];
+  const FaceLayup& face = tyre.zones.at(zone).outer;
+  std::vector<std::string> plies;
+  for (std::size_t k = 0; k < face.plies.size(); ++k) {
+    const std::string& n = face.plies[k].name;
+    const auto uses =
+        std::count_if(face.plies.begin(), face.plies.end(), [&](const Ply& p) { return p.name == n; });
+    const auto before = std::count_if(face.plies.begin(), face.plies.begin() + static_cast<long>(k),
+                                      [&](const Ply& p) { return p.name == n; });
+    plies.push_back(uses > 1 ? fmt::format("{}_{}", n, before + 1) : n);
+  }
+  CsvTable t;
+  t.comments = {
+      "tirefem: breaker (outer face) cords along the circumference in the equatorial plane",
+      fmt::format("element column {} (s = {:.4f} mm, zone '{}'), values at element centres", col,
+                  tm.element_s[m.element_index(col, 0)], tyre.zones[zone].name),
+      "per state and ply: force_N = tension per cord (N), strain = engineering strain along the cords"};
+  if (plies.empty()) t.comments.push_back("the outer face has no plies in this zone");
+  t.columns = {"phi_deg"};
+  for (const auto& st : states)
+    for (const auto& p : plies) {
+      t.columns.push_back(st.first + "_" + p + "_force_N");
+      t.columns.push_back(st.first + "_" + p + "_strain");
+    }
+  for (int j = 0; j < m.v_elements(); ++j) {
+    const int e = m.element_index(col, j);
+    std::vector<double> row{0.5 * (m.v_values[j] + m.v_values[j + 1]) * kDeg};
+    for (const auto& st : states) {
+      const FaceCordResults& c = (*st.second)[e].outer_cords;
+      for (std::size_t k = 0; k < plies.size(); ++k) {
+        row.push_back(k < c.force_N.size() ? c.force_N[k] : kNaN);
+        row.push_back(k < c.strain.size() ? c.strain[k] : kNaN);
+      }
+    }
+    t.rows.push_back(std::move(row));
+  }
+  return t;
+}
+
+Plot circumferential_belt_plot(const CsvTable& t) {
+  Plot plot{"Breaker cord tension along the circumference (equatorial plane)",
+            "φ [deg]",
+            "tension per cord [N]",
+            {}};
+  const std::vector<double> phi = column_values(t, column(t, "phi_deg"));
+  for (std::size_t c = 0; c < t.columns.size(); ++c)
+    if (t.columns[c].ends_with("_force_N"))
+      plot.series.push_back(
+          {strip_suffix(t.columns[c], "_force_N"), phi, column_values(t, static_cast<int>(c)), "lines"});
+  return plot;
+}
+
+Plot meridian_cord_strain_plot(const std::vector<std::pair<std::string, const CsvTable*>>& tables) {
+  Plot plot{"Cord strain along the meridian under the patch centre",
+            "s from the equator [mm]",
+            "cord strain (engineering) [-]",
+            {}};
+  for (const auto& [label, table] : tables) {
+    if (!table) continue;
+    const std::vector<double> s = column_values(*table, column(*table, "s_mm"));
+    for (std::size_t c = 0; c < table->columns.size(); ++c) {
+      const std::string& name = table->columns[c];
+      if (!name.ends_with("_cord_strain")) continue;
+      std::string ply = strip_suffix(name, "_cord_strain");
+      if (const auto pos = ply.find('_'); pos != std::string::npos) ply[pos] = ' ';  // "breaker belt1"
+      plot.series.push_back({label + ", " + ply, s, column_values(*table, static_cast<int>(c))});
+    }
+  }
+  return plot;
+}
+
+VtuMesh support_vtu(const StaticContactResult& r, double half_extent_mm) {
+  if (!(half_extent_mm > 0))
+    throw std::invalid_argument(fmt::format("support surface: half extent {} mm", half_extent_mm));
+  constexpr int n = 61;
+  const auto support = make_support(r.support);
+  const double deflection = r.final_state.deflection_mm;
+  VtuMesh v;
+  std::vector<double> height;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double x = -half_extent_mm + 2.0 * half_extent_mm * i / (n - 1);
+      const double y = -half_extent_mm + 2.0 * half_extent_mm * j / (n - 1);
+      const double z = support->height(x, y, deflection);
+      v.points.emplace_back(x, y, z);
+      height.push_back(z);
+    }
+  for (int j = 0; j + 1 < n; ++j)
+    for (int i = 0; i + 1 < n; ++i) {
+      const int p = j * n + i;
+      v.quads.push_back({p, p + 1, p + 1 + n, p + n});  // counter-clockwise seen from above (the tyre)
+    }
+  v.point_scalars = {{"height_mm", height}};
+  return v;
+}
+
+std::vector<double> nodal_contact_pressure(const TyreMesh& tm, const TyreDescription& tyre,
+                                           const StaticContactResult& r, const Eigen::VectorXd& u) {
+  const ShellMesh& m = tm.mesh;
+  if (u.size() != m.dof_count())
+    throw std::invalid_argument(
+        fmt::format("nodal contact pressure: displacement of size {} for {} DOFs", u.size(), m.dof_count()));
+  const auto support = make_support(r.support);
+  const double deflection = r.final_state.deflection_mm;
+  std::vector<double> q(m.pair_count(), 0.0);
+  if (tyre.tread_height.s.empty()) return q;
+  for (int p = 0; p < m.pair_count(); ++p) {
+    const double s = tm.pair_s(p);
+    if (std::abs(s) > tyre.tread_end_s) continue;
+    const double hp = tread_height_at(tyre, s);
+    if (hp < 0) continue;
+    const Eigen::Vector3d normal = (m.outer_nodes[p] - m.inner_nodes[p]).normalized();
+    const Eigen::Vector3d x = m.outer_nodes[p] + hp * normal + u.segment<3>(outer_dof(p, 0));
+    q[p] = tyre.tread_stiffness * std::max(support->penetration(x, deflection).value, 0.0);
+  }
+  return q;
+}
+
+VtuMesh loaded_shell_vtu(const TyreMesh& tm, const TyreDescription& tyre, const StaticContactResult& r,
+                         const std::vector<ElementResult>& elements) {
+  const Eigen::VectorXd& u = r.final_state.displacement;
+  VtuMesh v = shell_vtu(tm, tyre, u, elements);
+  const int np = tm.mesh.pair_count();
+  if (static_cast<int>(v.points.size()) != 2 * np)
+    throw std::logic_error(
+        "loaded_shell_vtu: shell_vtu no longer lists the inner, then the outer face nodes");
+  const std::vector<double> q = nodal_contact_pressure(tm, tyre, r, u);
+  std::vector<double> field(2 * static_cast<std::size_t>(np), 0.0);  // inner face (points 0 … np−1): 0
+  std::copy(q.begin(), q.end(), field.begin() + np);
+  v.point_scalars.emplace_back("contact_pressure_MPa", std::move(field));
+  return v;
+}
+
+toml::table load_curve_summary(const StaticContactResult& r) {
+  toml::table t;
+  insert_study(t, r);
+  toml::array points;
+  for (const LoadPoint& p : r.points) {
+    toml::table pt;
+    insert_patch(pt, p);
+    pt.insert("contact_iterations", p.contact_iterations);
+    pt.insert("newton_iterations", p.newton_iterations);
+    points.push_back(std::move(pt));
+  }
+  t.insert("points", std::move(points));
+  return t;
+}
+
+toml::table footprint_summary(const StaticContactResult& r) {
+  toml::table t;
+  insert_study(t, r);
+  if (r.target_Qz_N) t.insert("target_Qz_N", *r.target_Qz_N);
+  if (!r.points.empty()) insert_patch(t, r.points.back());
+  return t;
+}
+
+}  // namespace tirefem

@@ -1,0 +1,70 @@
+#pragma once
+// Rigid support surfaces (MODEL.md §4): the road plane, the test drum and a smooth shallow road
+// z = f(x, y), each moved towards the fixed axle by the deflection δz. One question is asked of them: how
+// far a point lies inside the support (the penetration g, > 0 inside), with its first and second
+// derivatives, so that the contact force kp g ∂g/∂x and its exact tangent follow.
+//
+// Coordinates: x along the wheel axis, y in the direction of travel, z from the road up to the axle; the
+// undeformed tyre touches z = 0 at the origin.
+#include <memory>
+
+#include <Eigen/Dense>
+
+#include "tirefem/case/case.hpp"
+
+namespace tirefem {
+
+struct Penetration {
+  double value = 0.0;                                       // g (mm), > 0 inside the support
+  Eigen::Vector3d gradient = Eigen::Vector3d::Zero();       // ∂g/∂x: −(the support's normal)
+  Eigen::Matrix3d hessian = Eigen::Matrix3d::Zero();        // ∂²g/∂x²
+};
+
+class SupportSurface {
+ public:
+  virtual ~SupportSurface() = default;
+  // Penetration of the point x when the support has been moved up by `deflection`.
+  virtual Penetration penetration(const Eigen::Vector3d& x, double deflection) const = 0;
+  // Height of the support surface above (x, y) (for drawing it), with the same deflection.
+  virtual double height(double x, double y, double deflection) const = 0;
+};
+
+// z = δz: the gap is exact and linear in the displacement (eq. 1 with ψ = 0).
+class RoadPlane final : public SupportSurface {
+ public:
+  Penetration penetration(const Eigen::Vector3d& x, double deflection) const override;
+  double height(double x, double y, double deflection) const override;
+};
+
+// A cylinder of radius R below the tyre, its axis parallel to x through (y = 0, z = δz − R). The
+// penetration is the exact distance to the cylinder along its radius, R − |(y, z − zc)|, not the paper's
+// linearisation of it (MODEL.md §4 allows either): its curvature term enters the tangent.
+class TestDrum final : public SupportSurface {
+ public:
+  explicit TestDrum(double radius);
+  Penetration penetration(const Eigen::Vector3d& x, double deflection) const override;
+  double height(double x, double y, double deflection) const override;
+  double radius() const { return radius_; }
+
+ private:
+  double radius_;
+};
+
+// z = f(x, y) + δz with f a polynomial Σ c x^i y^j; the penetration is the vertical one,
+// g = f(x, y) + δz − z (eq. 1 before linearisation), whose gradient (ψx, ψy, −1) is the paper's −n.
+class PolynomialRoad final : public SupportSurface {
+ public:
+  explicit PolynomialRoad(std::vector<SupportDescription::Term> terms);
+  Penetration penetration(const Eigen::Vector3d& x, double deflection) const override;
+  double height(double x, double y, double deflection) const override;
+
+ private:
+  std::vector<SupportDescription::Term> terms_;
+};
+
+std::unique_ptr<SupportSurface> make_support(const SupportDescription& description);
+
+// "plane", "drum", "surface".
+const char* support_kind_name(SupportDescription::Kind kind);
+
+}  // namespace tirefem
