@@ -32,8 +32,12 @@ int main(int argc, char** argv) {
     tirefem::RunOptions options;
     options.out_dir = out_dir;
     if (!quiet) options.progress = [](const std::string& m) { fmt::print("{}\n", m); std::fflush(stdout); };
-    const auto summary = tirefem::run_case(c, options);
-    if (!quiet) fmt::print("results in {} (summary: {})\n", out_dir, summary.string());
+    const tirefem::RunOutcome outcome = tirefem::run_case(c, options);
+    if (!quiet) fmt::print("results in {} (summary: {})\n", out_dir, outcome.summary.string());
+    if (!outcome.completed) {
+      fmt::print(stderr, "tirefem: some studies stopped short; see 'incomplete' in {}\n", outcome.summary.string());
+      return 2;
+    }
     return 0;
   } catch (const std::exception& e) {
     fmt::print(stderr, "tirefem: error: {}\n", e.what());

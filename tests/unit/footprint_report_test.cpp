@@ -28,6 +28,7 @@ double ellipse(double x, double y) {
 StaticContactResult ellipse_result(bool half, double skew = 0.0) {
   StaticContactResult r;
   r.name = half ? "half" : "full";
+  r.half_model = half;
   r.support.kind = SupportDescription::Kind::plane;
   r.final_state.deflection_mm = 10.0;
   r.completed = true;

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "tirefem/analysis/contact_iteration.hpp"
+#include "tirefem/forms/linearized_form.hpp"
 #include "tirefem/forms/pressure_form.hpp"
 #include "tirefem/forms/shell_internal_force.hpp"
 
@@ -98,6 +99,19 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
+// Shell and inflation pressure linearised about the inflated state u0.
+std::unique_ptr<Form> linearized_tyre(const TyreMesh& tm, double pressure, const Eigen::VectorXd& u0) {
+  DofMap dofs(tm.mesh.dof_count());
+  dofs.fix(tm.fixed_dofs);
+  std::vector<std::unique_ptr<Form>> forms;
+  forms.push_back(std::make_unique<ShellInternalForce>(tm.mesh, tm.sections, Kinematics::nonlinear));
+  forms.push_back(std::make_unique<PressureForm>(tm.mesh, tm.pressure_elements, pressure, Kinematics::nonlinear,
+                                                 /*symmetrize=*/true));
+  NonlinearProblem tyre(dofs, std::move(forms));
+  tyre.evaluate(u0, 1.0, true);
+  return std::make_unique<LinearizedForm>(tm.mesh, dofs, tyre.system().tangent(), tyre.system().residual(), u0);
+}
+
 // Inflated tyre + contact: the forms, the Newton solver and the deflection path over them.
 class StaticContactRun {
  public:
@@ -106,8 +120,11 @@ class StaticContactRun {
                    Kinematics kinematics, StaticContactResult& result, const ProgressSink& progress)
       : tm_(tm), settings_(settings), result_(result), progress_(progress),
         support_(make_support(support_description)) {
+    // The geometrically linear solution is linearised about the nonlinear inflated state (the tyre's
+    // stiffness under load comes from its inflation: a linear theory about the unstressed state has no
+    // pressure stiffening at all), so the inflation is nonlinear in both theories.
     InflationSettings inflate = inflation;
-    inflate.linear = kinematics == Kinematics::linear;
+    inflate.linear = false;
     result_.inflation = run_inflation(tm, inflate, progress);
     if (!result_.inflation.converged) throw std::runtime_error("inflation did not converge");
     result_.tread_points = tyre_tread_points(tm, tyre, settings.quadrature);
@@ -115,9 +132,13 @@ class StaticContactRun {
     DofMap dofs(tm.mesh.dof_count());
     dofs.fix(tm.fixed_dofs);
     std::vector<std::unique_ptr<Form>> forms;
-    forms.push_back(std::make_unique<ShellInternalForce>(tm.mesh, tm.sections, kinematics));
-    forms.push_back(std::make_unique<PressureForm>(tm.mesh, tm.pressure_elements, inflation.pressure,
-                                                   kinematics, /*symmetrize=*/true));
+    if (kinematics == Kinematics::nonlinear) {
+      forms.push_back(std::make_unique<ShellInternalForce>(tm.mesh, tm.sections, kinematics));
+      forms.push_back(std::make_unique<PressureForm>(tm.mesh, tm.pressure_elements, inflation.pressure,
+                                                     kinematics, /*symmetrize=*/true));
+    } else {
+      forms.push_back(linearized_tyre(tm, inflation.pressure, result_.inflation.displacement));
+    }
     auto contact = std::make_unique<WinklerContactForm>(tm.mesh, result_.tread_points,
                                                         tyre.tread_stiffness, *support_);
     contact_ = contact.get();
@@ -127,7 +148,7 @@ class StaticContactRun {
     NewtonSettings ns;
     ns.max_iterations = settings.max_newton_iterations;
     ns.residual_tolerance = settings.residual_tolerance;
-    ns.reuse_factorization = true;
+    ns.reuse_factorization = settings.reuse_factorizations;
     newton_ = std::make_unique<NewtonSolver>(*problem_, ns);
     path_ = std::make_unique<DeflectionPath>(*newton_, *contact_, settings, result_.inflation.displacement);
     record(0.0, DeflectionPath::Step{true, 0, 0, {true, 0, 0, 0, {}}, 0, {}}, 0.0, 0);
@@ -202,11 +223,6 @@ class StaticContactRun {
   std::unique_ptr<DeflectionPath> path_;
 };
 
-std::string support_label(const SupportDescription& s) {
-  return s.kind == SupportDescription::Kind::drum ? fmt::format("drum of {} mm", s.drum_diameter)
-                                                   : support_kind_name(s.kind);
-}
-
 }  // namespace
 
 StaticContactResult run_load_curve(const TyreMesh& tm, const TyreDescription& tyre,
@@ -218,6 +234,7 @@ StaticContactResult run_load_curve(const TyreMesh& tm, const TyreDescription& ty
   result.support = study.support;
   result.kinematics = study.linear ? Kinematics::linear : Kinematics::nonlinear;
   result.iteration = contact.iteration;
+  result.half_model = tm.half_model;
   if (progress)
     progress(fmt::format("load curve '{}': {}, {} theory, δz to {} mm in {} steps", study.name,
                          support_label(study.support), study.linear ? "linear" : "nonlinear",
@@ -240,6 +257,7 @@ StaticContactResult run_footprint(const TyreMesh& tm, const TyreDescription& tyr
   result.support = study.support;
   result.kinematics = study.linear ? Kinematics::linear : Kinematics::nonlinear;
   result.iteration = contact.iteration;
+  result.half_model = tm.half_model;
   result.target_Qz_N = study.target_load;
   if (progress)
     progress(fmt::format("footprint '{}': {}, {} theory, Qz = {} N", study.name, support_label(study.support),

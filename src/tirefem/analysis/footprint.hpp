@@ -48,6 +48,7 @@ struct StaticContactResult {
   SupportDescription support;
   Kinematics kinematics = Kinematics::nonlinear;
   ContactSettings::Iteration iteration = ContactSettings::Iteration::two_level;
+  bool half_model = true;            // the figures are for the full tyre either way
   bool completed = false;
   std::string failure;               // why it stopped, when not completed
   std::vector<LoadPoint> points;     // converged points only, the unloaded one first

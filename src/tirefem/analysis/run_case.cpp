@@ -7,9 +7,11 @@
 #include <omp.h>
 #include <toml++/toml.h>
 
+#include "tirefem/analysis/footprint.hpp"
 #include "tirefem/analysis/inflation.hpp"
 #include "tirefem/io/json_summary.hpp"
 #include "tirefem/io/results_folder.hpp"
+#include "tirefem/results/footprint_report.hpp"
 #include "tirefem/results/inflation_report.hpp"
 
 namespace tirefem {
@@ -29,9 +31,58 @@ void report(const ProgressSink& progress, const std::string& message) {
   if (progress) progress(message);
 }
 
+void add_krylov(toml::table& t, const SolveCounters& c) {
+  t.insert("reused_factorizations", c.krylov_solves);
+  t.insert("krylov_iterations", c.krylov_iterations);
+}
+
+// Plots are optional (gnuplot may be missing): warn once.
+class PlotWriter {
+ public:
+  PlotWriter(const ResultsFolder& folder, const ProgressSink& progress) : folder_(folder), progress_(progress) {}
+  void plot(const std::string& stem, const Plot& p) { note(write_plot(folder_.path("plots/" + stem), p)); }
+  void heatmap(const std::string& stem, const HeatMap& m) { note(write_heatmap(folder_.path("plots/" + stem), m)); }
+
+ private:
+  void note(bool rendered) {
+    if (!rendered && !warned_) report(progress_, "warning: gnuplot not found, plots written as scripts only");
+    warned_ = warned_ || !rendered;
+  }
+  const ResultsFolder& folder_;
+  ProgressSink progress_;
+  bool warned_ = false;
+};
+
+// Everything about one loaded state: VTU of the shell and the support, the tread points, the pressure
+// maps, the cord strains under the patch centre (Fig. 5) and the belt tension round the equator (Fig. 8).
+void write_loaded_state(const ResultsFolder& folder, PlotWriter& plots, const TyreMesh& tm, const Case& c,
+                        const StaticContactResult& r) {
+  const std::string& n = r.name;
+  const auto loaded = evaluate_element_results(tm, c.tyre, r.final_state.displacement, r.kinematics);
+  const auto inflated =
+      evaluate_element_results(tm, c.tyre, r.inflation.displacement, r.inflation.kinematics);
+  write_vtu(folder.path(n + "/shell.vtu"), loaded_shell_vtu(tm, c.tyre, r, loaded));
+  write_vtu(folder.path(n + "/support.vtu"), support_vtu(r));
+  write_csv(folder.path(n + "/tread_points.csv"), tread_points_table(r));
+  plots.heatmap(n + "_pressure_s_phi", pressure_map_s_phi(r));
+  plots.heatmap(n + "_footprint", footprint_map_xy(r));
+  const CsvTable meridian_loaded = meridian_table(tm, c.tyre, r.final_state.displacement, loaded);
+  const CsvTable meridian_inflated = meridian_table(tm, c.tyre, r.inflation.displacement, inflated);
+  write_csv(folder.path(n + "/meridian_under_patch.csv"), meridian_loaded);
+  plots.plot(n + "_cord_strain", meridian_cord_strain_plot({{"inflated", &meridian_inflated},
+                                                            {"loaded", &meridian_loaded}}));
+  const CsvTable belt = circumferential_belt_table(tm, c.tyre, {{"inflated", &inflated}, {"loaded", &loaded}});
+  write_csv(folder.path(n + "/belt_tension_equator.csv"), belt);
+  plots.plot(n + "_belt_tension", circumferential_belt_plot(belt));
+}
+
+std::string incomplete_message(const StaticContactResult& r) {
+  return fmt::format("'{}' stopped at δz = {:.3g} mm: {}", r.name, r.final_state.deflection_mm, r.failure);
+}
+
 }  // namespace
 
-std::filesystem::path run_case(const Case& c, const RunOptions& options) {
+RunOutcome run_case(const Case& c, const RunOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   ResultsFolder folder(options.out_dir);
   const TyreMesh tm = build_tyre_mesh(c.tyre, c.mesh);
@@ -85,10 +136,59 @@ std::filesystem::path run_case(const Case& c, const RunOptions& options) {
                        s.max_belt_cord_force_N, r.counters.newton_iterations, r.counters.wall_s));
   }
 
+  PlotWriter plots(folder, options.progress);
+  std::vector<StaticContactResult> curves;
+  toml::array curve_summaries, footprint_summaries, incomplete;
+  for (const LoadCurveStudy& study : c.load_curves) {
+    StaticContactResult r = run_load_curve(tm, c.tyre, c.inflation, c.contact, study, options.progress);
+    if (!r.completed) {
+      report(options.progress, "warning: load curve " + incomplete_message(r) + " (converged points kept)");
+      incomplete.push_back(incomplete_message(r));
+    }
+    write_csv(folder.path("load_curve_" + r.name + ".csv"), load_curve_table(r));
+    toml::table t = load_curve_summary(r);
+    t.insert("solver", counters_table(r.counters));
+    add_krylov(*t["solver"].as_table(), r.counters);
+    curve_summaries.push_back(std::move(t));
+    r.final_state.displacement.resize(0);  // keep the curve, not its last state
+    r.inflation.displacement.resize(0);
+    curves.push_back(std::move(r));
+  }
+  if (!curves.empty()) {
+    std::vector<const StaticContactResult*> list;
+    for (const auto& r : curves) list.push_back(&r);
+    plots.plot("load_characteristic", load_characteristic_plot(list));
+    summary.insert("load_curves", std::move(curve_summaries));
+  }
+  for (const FootprintStudy& study : c.footprints) {
+    const StaticContactResult r = run_footprint(tm, c.tyre, c.inflation, c.contact, study, options.progress);
+    write_csv(folder.path(r.name + "/load_points.csv"), load_curve_table(r));
+    if (!r.completed) {
+      report(options.progress, "warning: footprint " + incomplete_message(r));
+      incomplete.push_back(incomplete_message(r));
+    } else {
+      write_loaded_state(folder, plots, tm, c, r);
+      report(options.progress,
+             fmt::format("footprint '{}': Qz {:.1f} N at δz {:.2f} mm, patch {:.1f} × {:.1f} mm, area {:.0f} mm², "
+                         "pmax {:.3f} MPa",
+                         r.name, r.points.back().patch.Qz_N, r.final_state.deflection_mm,
+                         r.points.back().patch.patch_length_mm, r.points.back().patch.patch_width_mm,
+                         r.points.back().patch.contact_area_mm2, r.points.back().patch.max_pressure_MPa));
+    }
+    toml::table t = footprint_summary(r);
+    t.insert("solver", counters_table(r.counters));
+    add_krylov(*t["solver"].as_table(), r.counters);
+    footprint_summaries.push_back(std::move(t));
+  }
+  if (!c.footprints.empty()) summary.insert("footprints", std::move(footprint_summaries));
+  const bool completed = incomplete.empty();
+  summary.insert("completed", completed);
+  if (!incomplete.empty()) summary.insert("incomplete", std::move(incomplete));
+
   summary.insert("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   write_json(folder.path("summary.json"), summary);
   folder.commit();
-  return options.out_dir / "summary.json";
+  return {options.out_dir / "summary.json", completed};
 }
 
 }  // namespace tirefem

@@ -13,7 +13,13 @@ struct RunOptions {
   ProgressSink progress;
 };
 
-// Throws on failure (nothing is left in out_dir then). Returns the path of summary.json.
-std::filesystem::path run_case(const Case& c, const RunOptions& options);
+struct RunOutcome {
+  std::filesystem::path summary;  // summary.json
+  bool completed = true;          // false when a load curve or footprint stopped short (its converged
+                                  // points are written; summary.json says why)
+};
+
+// Throws on failure of the inflation or of the writers (nothing is left in out_dir then).
+RunOutcome run_case(const Case& c, const RunOptions& options);
 
 }  // namespace tirefem

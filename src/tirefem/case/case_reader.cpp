@@ -599,7 +599,7 @@ class Reader {
   ContactSettings contact(const toml::node& n, const std::string& path) {
     const toml::table& t = table(n, path,
                                  {"quadrature", "iteration", "max_contact_iterations", "region_tolerance",
-                                  "max_newton_iterations", "residual_tolerance"});
+                                  "max_newton_iterations", "residual_tolerance", "reuse_factorizations"});
     ContactSettings s;
     opt_integer(t, path, "quadrature", s.quadrature);
     if (const toml::node* v = get(t, path, "iteration"))
@@ -609,6 +609,7 @@ class Reader {
     opt_integer(t, path, "region_tolerance", s.region_tolerance);
     opt_integer(t, path, "max_newton_iterations", s.max_newton_iterations);
     opt_number(t, path, "residual_tolerance", s.residual_tolerance, "");
+    opt_bool(t, path, "reuse_factorizations", s.reuse_factorizations);
     return s;
   }
 

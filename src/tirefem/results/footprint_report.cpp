@@ -82,7 +82,7 @@ TreadGrid tread_grid(const StaticContactResult& r) {
   us = distinct(us, tol_u);
   vs = distinct(vs, tol_v);
   TreadGrid g;
-  g.half_model = us.front() >= -tol_u;  // a full model has tread on both sides of the equator
+  g.half_model = r.half_model;
   const int n0 = static_cast<int>(us.size());
   std::vector<int> column(n0), mirror_column(n0, -1);
   if (g.half_model)
@@ -206,12 +206,6 @@ void insert_patch(toml::table& t, const LoadPoint& p) {
 }
 
 }  // namespace
-
-std::string support_label(const SupportDescription& support) {
-  if (support.kind == SupportDescription::Kind::drum)
-    return fmt::format("drum {:g} mm", support.drum_diameter);
-  return support_kind_name(support.kind);
-}
 
 std::string theory_label(Kinematics kinematics) {
   return kinematics == Kinematics::linear ? "linear" : "nonlinear";

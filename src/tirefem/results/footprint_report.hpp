@@ -26,8 +26,6 @@ namespace tirefem {
 inline constexpr int kPatchMarginPoints = 3;        // tread-point rows / columns (s–φ map, point table)
 inline constexpr double kFootprintMarginMm = 10.0;  // road-coordinate footprint map
 
-// "plane", "drum 1830 mm", "surface" / "nonlinear", "linear": the labels used in comments and legends.
-std::string support_label(const SupportDescription& support);
 std::string theory_label(Kinematics kinematics);
 
 // One row per load point: deflection_mm, Qz_N, contact_area_mm2, patch_length_mm, patch_width_mm,

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 namespace tirefem {
 
 Penetration RoadPlane::penetration(const Eigen::Vector3d& x, double deflection) const {
@@ -91,6 +93,12 @@ const char* support_kind_name(SupportDescription::Kind kind) {
     case SupportDescription::Kind::surface: return "surface";
   }
   return "?";
+}
+
+std::string support_label(const SupportDescription& support) {
+  if (support.kind == SupportDescription::Kind::drum)
+    return fmt::format("drum {:g} mm", support.drum_diameter);
+  return support_kind_name(support.kind);
 }
 
 }  // namespace tirefem

@@ -7,6 +7,7 @@
 // Coordinates: x along the wheel axis, y in the direction of travel, z from the road up to the axle; the
 // undeformed tyre touches z = 0 at the origin.
 #include <memory>
+#include <string>
 
 #include <Eigen/Dense>
 
@@ -66,5 +67,7 @@ std::unique_ptr<SupportSurface> make_support(const SupportDescription& descripti
 
 // "plane", "drum", "surface".
 const char* support_kind_name(SupportDescription::Kind kind);
+// For titles and messages: "plane", "drum 1830 mm", "surface".
+std::string support_label(const SupportDescription& support);
 
 }  // namespace tirefem

@@ -1,5 +1,6 @@
 #pragma once
-// Numbering of the free degrees of freedom (equations); constrained DOFs are held at zero.
+// Numbering of the free degrees of freedom (equations); constrained DOFs keep whatever value the
+// displacement vector holds there (zero unless a prescribed value is set).
 #include <vector>
 
 #include <Eigen/Dense>

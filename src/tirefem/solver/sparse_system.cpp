@@ -1,5 +1,7 @@
 #include "tirefem/solver/sparse_system.hpp"
 
+#include <stdexcept>
+
 #include <algorithm>
 
 namespace tirefem {
@@ -42,6 +44,14 @@ void SparseSystem::clear(bool with_tangent) {
 void SparseSystem::add_residual(int dof, double value) {
 #pragma omp atomic
   residual_[dof] += value;
+}
+
+void SparseSystem::add_matrix(const SparseMatrix& m) {
+  if (m.nonZeros() != tangent_.nonZeros() || m.outerSize() != tangent_.outerSize() ||
+      !std::equal(m.innerIndexPtr(), m.innerIndexPtr() + m.nonZeros(), tangent_.innerIndexPtr()))
+    throw std::invalid_argument("add_matrix: the matrix does not have the system's sparsity pattern");
+  Eigen::Map<Eigen::VectorXd>(tangent_.valuePtr(), tangent_.nonZeros()) +=
+      Eigen::Map<const Eigen::VectorXd>(m.valuePtr(), m.nonZeros());
 }
 
 void SparseSystem::add(std::span<const int> dofs, const double* f, const double* k, bool with_tangent) {

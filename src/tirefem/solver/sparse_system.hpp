@@ -36,6 +36,9 @@ class SparseSystem {
     add(dofs, f.data(), k.data(), with_tangent);
   }
   void add_residual(int dof, double value);
+  // Adds a whole matrix over the equations with the system's own pattern (e.g. a stored tangent of this
+  // system). Not thread-safe: call it outside parallel loops. Throws if the pattern differs.
+  void add_matrix(const SparseMatrix& matrix);
 
   const Eigen::VectorXd& residual() const { return residual_; }  // full length, incl. reactions
   const SparseMatrix& tangent() const { return tangent_; }        // equations × equations
