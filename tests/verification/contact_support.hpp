@@ -4,6 +4,7 @@
 // forms of StaticContactRun in analysis/footprint.cpp, so a test can look at the reactions), and a
 // stopwatch. All tests use coarse meshes so the whole contact set runs in well under a minute or two.
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>

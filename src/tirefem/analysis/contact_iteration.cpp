@@ -28,10 +28,17 @@ ContactSolveOutcome solve_contact(NewtonSolver& newton, WinklerContactForm& cont
     return out;
   }
   // Two-level iteration: Ωc from the starting state (the prediction), then revised after each solve.
+  // While Ωc still changes, Newton stops at the provisional tolerance; once it has settled, a final
+  // solve to the full tolerance (usually one or two iterations) confirms it.
+  const double final_tolerance = newton.residual_tolerance();
+  const double provisional = std::max(settings.provisional_tolerance, final_tolerance);
   std::vector<char> region = contact.region(u);
+  bool settled = false;
   for (int outer = 1; outer <= settings.max_contact_iterations; ++outer) {
     contact.freeze_region(region);
+    newton.set_residual_tolerance(settled ? final_tolerance : provisional);
     const NewtonOutcome n = newton.solve(u, 1.0);
+    newton.set_residual_tolerance(final_tolerance);
     out.contact_iterations = outer;
     out.newton_iterations += n.iterations;
     if (!n.converged) {
@@ -42,8 +49,13 @@ ContactSolveOutcome solve_contact(NewtonSolver& newton, WinklerContactForm& cont
     std::vector<char> revised = contact.region(u);
     out.region_changes = count_changes(region, revised);
     if (out.region_changes <= settings.region_tolerance) {
-      out.converged = true;
-      return out;
+      if (settled || provisional <= final_tolerance) {
+        out.converged = true;
+        return out;
+      }
+      settled = true;  // polish with the full tolerance, then check the region once more
+    } else {
+      settled = false;
     }
     region = std::move(revised);
   }

@@ -98,6 +98,9 @@ struct ContactSettings {
   int region_tolerance = 0;         // the region is settled when at most this many points changed
   int max_newton_iterations = 25;   // inner loop (per outer iteration)
   double residual_tolerance = 1e-8; // Newton: ‖R‖ relative to the size of the inflation load
+  // Two-level: Newton tolerance while the region is still changing; the final solve (region settled)
+  // uses residual_tolerance.
+  double provisional_tolerance = 1e-5;
   // Newton systems solved by GMRES preconditioned with an earlier factorisation while that converges
   // fast (NewtonSettings::reuse_factorization); false: every Newton iteration factorises.
   bool reuse_factorizations = true;

@@ -185,6 +185,7 @@ class Checker {
     at_least(s.region_tolerance, 0, join(path, "region_tolerance"));
     at_least(s.max_newton_iterations, 1, join(path, "max_newton_iterations"));
     positive(s.residual_tolerance, join(path, "residual_tolerance"));
+    positive(s.provisional_tolerance, join(path, "provisional_tolerance"));
   }
 
   void support(const SupportDescription& s, const std::string& path) const {
@@ -599,7 +600,8 @@ class Reader {
   ContactSettings contact(const toml::node& n, const std::string& path) {
     const toml::table& t = table(n, path,
                                  {"quadrature", "iteration", "max_contact_iterations", "region_tolerance",
-                                  "max_newton_iterations", "residual_tolerance", "reuse_factorizations"});
+                                  "max_newton_iterations", "residual_tolerance", "provisional_tolerance",
+                                  "reuse_factorizations"});
     ContactSettings s;
     opt_integer(t, path, "quadrature", s.quadrature);
     if (const toml::node* v = get(t, path, "iteration"))
@@ -609,6 +611,7 @@ class Reader {
     opt_integer(t, path, "region_tolerance", s.region_tolerance);
     opt_integer(t, path, "max_newton_iterations", s.max_newton_iterations);
     opt_number(t, path, "residual_tolerance", s.residual_tolerance, "");
+    opt_number(t, path, "provisional_tolerance", s.provisional_tolerance, "");
     opt_bool(t, path, "reuse_factorizations", s.reuse_factorizations);
     return s;
   }

@@ -44,6 +44,8 @@ class NewtonSolver {
   NonlinearProblem& problem() { return problem_; }
   const LinearSolverStats& linear_stats() const { return linear_.stats(); }
   int total_iterations() const { return total_iterations_; }
+  double residual_tolerance() const { return settings_.residual_tolerance; }
+  void set_residual_tolerance(double tolerance) { settings_.residual_tolerance = tolerance; }
 
  private:
   bool solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du);
