@@ -67,7 +67,7 @@ using Kind = SupportDescription::Kind;
 TEST(CaseReaderStudies, ReadsTheExampleStudies) {
   const Case c = read_case(kExample);
   EXPECT_EQ(c.contact.quadrature, 4);
-  EXPECT_EQ(c.contact.iteration, ContactSettings::Iteration::two_level);
+  EXPECT_EQ(c.contact.iteration, ContactSettings::Iteration::single_loop);
   EXPECT_EQ(c.contact.max_contact_iterations, 30);
   EXPECT_EQ(c.contact.region_tolerance, 0);
   EXPECT_EQ(c.contact.max_newton_iterations, 25);
@@ -238,7 +238,7 @@ TEST(CaseReaderStudies, EnumLikeStringsListTheAcceptedValues) {
   EXPECT_EQ(error_of(text), where(text, "\"cylinder\"") +
                                 "load_curve[1].support.kind: must be \"plane\", \"drum\" or \"surface\" (got "
                                 "\"cylinder\")");
-  text = edited("iteration = \"two_level\"", "iteration = \"three_level\"");
+  text = edited("iteration = \"single_loop\"", "iteration = \"three_level\"");
   EXPECT_EQ(error_of(text), where(text, "\"three_level\"") +
                                 "contact.iteration: must be \"two_level\" or \"single_loop\" (got "
                                 "\"three_level\")");
@@ -281,7 +281,7 @@ TEST(CaseReaderStudies, MissingAndWronglyTypedFields) {
                   "load_curve: must be an array of tables [[load_curve]] (got a table)");
   EXPECT_CONTAINS(error_of(edited("target_load = 3700.0", "target_load = \"3700 N\"")),
                   "footprint[0].target_load: must be a number (N) (got a string)");
-  EXPECT_CONTAINS(error_of(edited("iteration = \"two_level\"", "iteration = 2")),
+  EXPECT_CONTAINS(error_of(edited("iteration = \"single_loop\"", "iteration = 2")),
                   "contact.iteration: must be a string (got an integer)");
 }
 

@@ -98,7 +98,7 @@ class Stopwatch {
 struct ManualContactRun {
   ManualContactRun(const TyreMesh& tm_, const TyreDescription& tyre, const InflationSettings& inflation,
                    const ContactSettings& settings_, const SupportDescription& support_description,
-                   Kinematics kinematics = Kinematics::nonlinear)
+                   Kinematics kinematics = Kinematics::nonlinear, double start_deflection = 0.0)
       : tm(tm_), settings(settings_), support(make_support(support_description)) {
     InflationSettings inflate = inflation;
     inflate.linear = kinematics == Kinematics::linear;
@@ -121,7 +121,9 @@ struct ManualContactRun {
     ns.residual_tolerance = settings.residual_tolerance;
     ns.reuse_factorization = settings.reuse_factorizations;
     newton = std::make_unique<NewtonSolver>(*problem, ns);
-    path = std::make_unique<DeflectionPath>(*newton, *contact, settings, inflated.displacement);
+    // start_deflection < 0 starts the path with the support clear of the inflated tyre (which, grown by the
+    // inflation, already reaches below z = 0 at δz = 0).
+    path = std::make_unique<DeflectionPath>(*newton, *contact, settings, inflated.displacement, start_deflection);
   }
 
   const TyreMesh& tm;

@@ -103,7 +103,7 @@ struct ContactSettings {
   double provisional_tolerance = 1e-5;
   // Newton systems solved by GMRES preconditioned with an earlier factorisation while that converges
   // fast (NewtonSettings::reuse_factorization); false: every Newton iteration factorises.
-  bool reuse_factorizations = true;
+  bool reuse_factorizations = false;
 };
 
 // Load characteristic Qz(δz): the support pressed onto the inflated tyre in equal deflection steps.
