@@ -1,5 +1,11 @@
-// The command line end to end: the example case runs and writes every promised file; `check` accepts
-// the example; bad input stops with a one-line error naming the field and writes nothing.
+// The command line end to end: a case runs and writes every promised file; `check` accepts the example;
+// bad input stops with a one-line error naming the field and writes nothing.
+//
+// The run uses tests/smoke/coarse_case.toml, the example on a 36 × 10 mesh with 4 points per load curve
+// and all its studies (three load curves, one footprint): a few seconds instead of the minutes the
+// example's 120 × 46 mesh takes. A separate test keeps the two cases in step (same studies and settings).
+#include <cctype>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -7,6 +13,8 @@
 #include <string>
 
 #include <gtest/gtest.h>
+
+#include "tirefem/case/case_reader.hpp"
 
 namespace fs = std::filesystem;
 
@@ -35,6 +43,7 @@ fs::path scratch(const std::string& name) {
 }
 
 const std::string kExample = std::string(TIREFEM_SOURCE_DIR) + "/examples/175-70R13.toml";
+const std::string kCoarseCase = std::string(TIREFEM_SOURCE_DIR) + "/tests/smoke/coarse_case.toml";
 
 std::string read_text(const fs::path& p) {
   std::ifstream in(p);
@@ -43,25 +52,126 @@ std::string read_text(const fs::path& p) {
   return ss.str();
 }
 
+bool gnuplot_on_path() { return std::system("command -v gnuplot > /dev/null 2>&1") == 0; }
+
+// The raw value of a key of the outermost JSON object ("" when absent): the text after its colon up to the
+// next ',' or '}' at that level, or the opening bracket of an array / object value.
+std::string top_level_value(const std::string& json, const std::string& key) {
+  int depth = 0;
+  bool in_string = false;
+  for (std::size_t i = 0; i < json.size(); ++i) {
+    const char c = json[i];
+    if (in_string) {
+      if (c == '\\') ++i;
+      else if (c == '"') in_string = false;
+      continue;
+    }
+    if (c == '{' || c == '[') ++depth;
+    else if (c == '}' || c == ']') --depth;
+    else if (c == '"') {
+      const std::size_t end = json.find('"', i + 1);
+      if (depth == 1 && json.compare(i + 1, end - i - 1, key) == 0) {
+        std::size_t v = json.find(':', end) + 1;
+        while (v < json.size() && std::isspace(static_cast<unsigned char>(json[v]))) ++v;
+        if (json[v] == '[' || json[v] == '{') return std::string(1, json[v]);
+        std::size_t e = v;
+        while (e < json.size() && json[e] != ',' && json[e] != '}' && json[e] != '\n') ++e;
+        std::string value = json.substr(v, e - v);
+        while (!value.empty() && std::isspace(static_cast<unsigned char>(value.back()))) value.pop_back();
+        return value;
+      }
+      in_string = true;
+    }
+  }
+  return "";
+}
+
 TEST(Cli, CheckAcceptsTheExample) {
   const CliRun r = run_cli("check " + kExample);
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("ok"), std::string::npos) << r.output;
 }
 
-TEST(Cli, RunWritesAllResultsOfTheExample) {
-  const fs::path out = scratch("example");
-  const CliRun r = run_cli("run " + kExample + " --out " + out.string());
+TEST(Cli, CheckAcceptsTheCoarseCase) {
+  const CliRun r = run_cli("check " + kCoarseCase);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("ok"), std::string::npos) << r.output;
+}
+
+// The coarse case is the example with a coarser mesh and fewer load points, nothing else that the run
+// depends on: same tyre, inflation, contact settings and studies.
+TEST(Cli, CoarseCaseKeepsInStepWithTheExample) {
+  const tirefem::Case example = tirefem::read_case(kExample);
+  const tirefem::Case coarse = tirefem::read_case(kCoarseCase);
+  EXPECT_EQ(coarse.mesh.circumferential_elements, 36);
+  EXPECT_EQ(coarse.mesh.meridional_elements, 10);
+  EXPECT_EQ(coarse.mesh.half_model, example.mesh.half_model);
+  EXPECT_EQ(coarse.mesh.circumferential_refinement, example.mesh.circumferential_refinement);
+  EXPECT_EQ(coarse.title, example.title);
+  EXPECT_EQ(coarse.tyre.name, example.tyre.name);
+  EXPECT_EQ(coarse.tyre.zones.size(), example.tyre.zones.size());
+  EXPECT_EQ(coarse.tyre.profile.size(), example.tyre.profile.size());
+  EXPECT_EQ(coarse.tyre.tread_stiffness, example.tyre.tread_stiffness);
+  EXPECT_EQ(coarse.tyre.tread_end_s, example.tyre.tread_end_s);
+  EXPECT_EQ(coarse.inflation.pressure, example.inflation.pressure);
+  EXPECT_EQ(coarse.inflation.linear, example.inflation.linear);
+  EXPECT_EQ(coarse.contact.iteration, example.contact.iteration);
+  EXPECT_EQ(coarse.contact.quadrature, example.contact.quadrature);
+  EXPECT_EQ(coarse.contact.reuse_factorizations, example.contact.reuse_factorizations);
+  EXPECT_EQ(coarse.contact.residual_tolerance, example.contact.residual_tolerance);
+  ASSERT_EQ(coarse.load_curves.size(), example.load_curves.size()) << "the coarse case must keep all load curves";
+  for (std::size_t i = 0; i < example.load_curves.size(); ++i) {
+    const auto &a = coarse.load_curves[i], &b = example.load_curves[i];
+    EXPECT_EQ(a.name, b.name);
+    EXPECT_EQ(a.support.kind, b.support.kind) << a.name;
+    EXPECT_EQ(a.support.drum_diameter, b.support.drum_diameter) << a.name;
+    EXPECT_EQ(a.linear, b.linear) << a.name;
+    EXPECT_EQ(a.max_deflection, b.max_deflection) << a.name;
+    EXPECT_EQ(a.points, 4) << a.name;
+  }
+  ASSERT_EQ(coarse.footprints.size(), example.footprints.size()) << "the coarse case must keep all footprints";
+  for (std::size_t i = 0; i < example.footprints.size(); ++i) {
+    const auto &a = coarse.footprints[i], &b = example.footprints[i];
+    EXPECT_EQ(a.name, b.name);
+    EXPECT_EQ(a.support.kind, b.support.kind) << a.name;
+    EXPECT_EQ(a.linear, b.linear) << a.name;
+    EXPECT_EQ(a.target_load, b.target_load) << a.name;
+    EXPECT_EQ(a.load_tolerance, b.load_tolerance) << a.name;
+  }
+}
+
+TEST(Cli, RunWritesAllResultsOfTheCoarseCase) {
+  const fs::path out = scratch("coarse");
+  const CliRun r = run_cli("run " + kCoarseCase + " --out " + out.string());
+  // Exit code 2: a load curve or the footprint stopped short (its converged points are written).
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  for (const char* f : {"summary.json", "inflation_meridian.csv", "inflation.vtu",
-                        "plots/inflation_cord_tension.gp", "plots/inflation_cross_section.gp"})
+  for (const char* f : {"summary.json", "inflation_meridian.csv", "inflation.vtu", "plots/inflation_cord_tension.gp",
+                        "plots/inflation_cross_section.gp", "load_curve_plane.csv", "load_curve_drum.csv",
+                        "load_curve_plane_linear.csv", "plots/load_characteristic.gp",
+                        "footprint_3700N/shell.vtu", "footprint_3700N/support.vtu",
+                        "footprint_3700N/tread_points.csv", "footprint_3700N/meridian_under_patch.csv",
+                        "footprint_3700N/belt_tension_equator.csv", "plots/footprint_3700N_footprint.gp",
+                        "plots/footprint_3700N_pressure_s_phi.gp", "plots/footprint_3700N_cord_strain.gp",
+                        "plots/footprint_3700N_belt_tension.gp"})
     EXPECT_TRUE(fs::exists(out / f)) << f;
+  // Plots are rendered only when gnuplot is on PATH (otherwise the scripts above are all there is).
+  if (gnuplot_on_path()) {
+    for (const char* f : {"plots/load_characteristic.png", "plots/load_characteristic.svg",
+                          "plots/footprint_3700N_footprint.png", "plots/footprint_3700N_pressure_s_phi.png",
+                          "plots/footprint_3700N_cord_strain.png", "plots/footprint_3700N_belt_tension.png"})
+      EXPECT_TRUE(fs::exists(out / f)) << f;
+  } else {
+    std::printf("  gnuplot is not on PATH: rendered plots not checked\n");
+  }
   const std::string summary = read_text(out / "summary.json");
   for (const char* key : {"\"dof\"", "\"elements\"", "\"wall_time_s\"", "\"crown_radius_growth_mm\"",
                           "\"section_width_growth_mm\"", "\"max_carcass_cord_force_N\"",
                           "\"max_belt_cord_force_N\"", "\"newton_iterations\""})
     EXPECT_NE(summary.find(key), std::string::npos) << key;
   EXPECT_NE(summary.find("\"converged\" : true"), std::string::npos);
+  EXPECT_EQ(top_level_value(summary, "load_curves"), "[") << "summary.json: load_curves must be an array";
+  EXPECT_EQ(top_level_value(summary, "footprints"), "[") << "summary.json: footprints must be an array";
+  EXPECT_EQ(top_level_value(summary, "completed"), "true") << "summary.json: every study must have completed";
   fs::remove_all(out.parent_path());
 }
 

@@ -32,11 +32,12 @@ Reactions reactions(NonlinearProblem& problem, const Eigen::VectorXd& u) {
   return out;
 }
 
-void check_equilibrium(const char* label, const SupportDescription& support, bool half_model) {
+void check_equilibrium(const char* label, const SupportDescription& support, bool half_model,
+                       ContactSettings::Iteration iteration = ContactSettings::Iteration::two_level) {
   const Stopwatch clock;
   const Case& c = example_case();
   const TyreMesh tm = build_tyre_mesh(c.tyre, coarse_mesh(36, 8, half_model));
-  ContactSettings settings = test_contact_settings();
+  ContactSettings settings = test_contact_settings(iteration);
   settings.residual_tolerance = 1e-10;
   ManualContactRun run(tm, c.tyre, c.inflation, settings, support);
   for (double delta : {5.0, 10.0, 15.0}) {
@@ -50,9 +51,9 @@ void check_equilibrium(const char* label, const SupportDescription& support, boo
   const double factor = tm.half_model ? 2.0 : 1.0;
   const double axle_load = -factor * r.fixed.z();
   const double error = std::abs(axle_load - f.Qz_N) / f.Qz_N;
-  std::printf("  %s, δz 15 mm: Qz (contact integral) %.6f N, axle load (rim reaction) %.6f N, relative "
+  std::printf("  %s (%s), δz 15 mm: Qz (contact integral) %.6f N, axle load (rim reaction) %.6f N, relative "
               "difference %.2e; Σ free-DOF residual z %.2e N; rim reaction y %.2e N (%.1f s)\n",
-              label, f.Qz_N, axle_load, error, r.free.z(), factor * r.fixed.y(), clock.seconds());
+              label, iteration_name(iteration), f.Qz_N, axle_load, error, r.free.z(), factor * r.fixed.y(), clock.seconds());
   EXPECT_GT(f.Qz_N, 500.0) << "the tyre must be visibly loaded";
   EXPECT_LT(error, 1e-6) << label << ": Qz must equal the axle load (statics), tol 1e-6";
   // The support force is symmetric fore and aft: no net longitudinal reaction (same tolerance).
@@ -61,6 +62,10 @@ void check_equilibrium(const char* label, const SupportDescription& support, boo
 
 TEST(ContactEquilibrium, QzEqualsAxleLoadHalfModelPlane) {
   check_equilibrium("half model, plane", plane_support(), true);
+}
+
+TEST(ContactEquilibrium, QzEqualsAxleLoadHalfModelPlaneSingleLoop) {
+  check_equilibrium("half model, plane", plane_support(), true, ContactSettings::Iteration::single_loop);
 }
 
 TEST(ContactEquilibrium, QzEqualsAxleLoadHalfModelDrum) {

@@ -11,6 +11,7 @@
 //     bending whatever its stiffness (the consistent nodal loads of the pressure and of the tread are both
 //     those of a constant on the same rectangles), so the tread pressure is q everywhere: Qz = q A and
 //     g = q / kp at every tread point. Tolerance 1e-10 relative: Newton is driven to 1e-12 of the load.
+#include <cmath>
 #include <cstdio>
 
 #include <gtest/gtest.h>
@@ -49,9 +50,10 @@ TEST(ContactFlatPunch, HeldPunchCarriesKpAreaDeflection) {
     contact.set_deflection(delta);
     const PatchFigures f = patch_figures(points, contact.evaluate(u), /*half_model=*/false);
     const double expected = kp * area * delta;
-    std::printf("  held punch, δ %.1f mm: Qz %.10g N (kp A δ = %.10g), area %.10g mm² (A = %.10g), "
-                "mean pressure %.6g MPa\n",
-                delta, f.Qz_N, expected, f.contact_area_mm2, area, f.mean_pressure_MPa);
+    std::printf("  held punch, δ %.1f mm: Qz %.10g N (kp A δ = %.10g, relative error %.1e), area %.10g mm² "
+                "(A = %.10g, relative error %.1e), mean pressure %.6g MPa\n",
+                delta, f.Qz_N, expected, std::abs(f.Qz_N - expected) / expected, f.contact_area_mm2, area,
+                std::abs(f.contact_area_mm2 - area) / area, f.mean_pressure_MPa);
     EXPECT_NEAR(f.Qz_N, expected, 1e-10 * expected) << "Qz = kp A δ (VERIFICATION.md §4)";
     EXPECT_NEAR(f.contact_area_mm2, area, 1e-10 * area) << "the whole plate is in contact";
     EXPECT_NEAR(f.mean_pressure_MPa, kp * delta, 1e-10 * kp * delta);
@@ -98,9 +100,10 @@ TEST(ContactFlatPunch, FreePlateUnderUniformPressureSettlesUniformly) {
   const PatchFigures f = patch_figures(points, states, false);
   double worst_g = 0.0;
   for (const TreadPointState& s : states) worst_g = std::max(worst_g, std::abs(s.penetration - q / kp));
-  std::printf("  free plate, q %.2f MPa on kp %.2f: Qz %.10g N (q A = %.10g), max |g − q/kp| %.2e mm, "
-              "%d contact / %d Newton iterations\n",
-              q, kp, f.Qz_N, q * area, worst_g, out.contact_iterations, out.newton_iterations);
+  std::printf("  free plate, q %.2f MPa on kp %.2f: Qz %.10g N (q A = %.10g, relative error %.1e), max |g − q/kp| "
+              "%.2e mm, %d contact / %d Newton iterations\n",
+              q, kp, f.Qz_N, q * area, std::abs(f.Qz_N - q * area) / (q * area), worst_g, out.contact_iterations,
+              out.newton_iterations);
   EXPECT_NEAR(f.Qz_N, q * area, 1e-10 * q * area) << "the tread carries the uniform load: Qz = q A";
   EXPECT_NEAR(f.contact_area_mm2, area, 1e-10 * area);
   EXPECT_LT(worst_g, 1e-10 * q / kp) << "uniform settlement: g = q / kp at every tread point";
