@@ -151,7 +151,10 @@ class StaticContactRun {
     ns.reuse_factorization = settings.reuse_factorizations;
     newton_ = std::make_unique<NewtonSolver>(*problem_, ns);
     path_ = std::make_unique<DeflectionPath>(*newton_, *contact_, settings, result_.inflation.displacement);
-    record(0.0, DeflectionPath::Step{true, 0, 0, {true, 0, 0, 0, {}}, 0, {}}, 0.0, 0);
+    // δz is measured from the undeformed tyre (MODEL.md §2), so the inflated tyre, grown by about
+    // 0.5 mm, already presses on the support at δz = 0: the first load point is solved like the others.
+    if (!solve_at(0.0))
+      throw std::runtime_error(fmt::format("contact at δz = 0 did not converge: {}", result_.failure));
   }
 
   // Solves at δz and records the load point; false (and result_.failure) when it does not converge.
