@@ -226,18 +226,24 @@ class StaticContactRun {
   std::unique_ptr<DeflectionPath> path_;
 };
 
-}  // namespace
-
-StaticContactResult run_load_curve(const TyreMesh& tm, const TyreDescription& tyre,
-                                   const InflationSettings& inflation, const ContactSettings& contact,
-                                   const LoadCurveStudy& study, const ProgressSink& progress) {
-  const auto t0 = Clock::now();
+template <class Study>
+StaticContactResult empty_result(const TyreMesh& tm, const ContactSettings& contact, const Study& study) {
   StaticContactResult result;
   result.name = study.name;
   result.support = study.support;
   result.kinematics = study.linear ? Kinematics::linear : Kinematics::nonlinear;
   result.iteration = contact.iteration;
   result.half_model = tm.half_model;
+  return result;
+}
+
+}  // namespace
+
+StaticContactResult run_load_curve(const TyreMesh& tm, const TyreDescription& tyre,
+                                   const InflationSettings& inflation, const ContactSettings& contact,
+                                   const LoadCurveStudy& study, const ProgressSink& progress) {
+  const auto t0 = Clock::now();
+  StaticContactResult result = empty_result(tm, contact, study);
   if (progress)
     progress(fmt::format("load curve '{}': {}, {} theory, δz to {} mm in {} steps", study.name,
                          support_label(study.support), study.linear ? "linear" : "nonlinear",
@@ -255,12 +261,7 @@ StaticContactResult run_footprint(const TyreMesh& tm, const TyreDescription& tyr
                                   const InflationSettings& inflation, const ContactSettings& contact,
                                   const FootprintStudy& study, const ProgressSink& progress) {
   const auto t0 = Clock::now();
-  StaticContactResult result;
-  result.name = study.name;
-  result.support = study.support;
-  result.kinematics = study.linear ? Kinematics::linear : Kinematics::nonlinear;
-  result.iteration = contact.iteration;
-  result.half_model = tm.half_model;
+  StaticContactResult result = empty_result(tm, contact, study);
   result.target_Qz_N = study.target_load;
   if (progress)
     progress(fmt::format("footprint '{}': {}, {} theory, Qz = {} N", study.name, support_label(study.support),

@@ -65,16 +65,12 @@ class WinklerContactForm final : public Form {
   void freeze_region(std::vector<char> region);
   // Single-loop iteration: the region is {g > 0} at each iterate.
   void release_region() { frozen_.clear(); }
-  bool frozen() const { return !frozen_.empty(); }
-  const std::vector<char>& frozen_region() const { return frozen_; }
 
   // {g > 0} at the displacement u: the region the outer loop proposes.
   std::vector<char> region(const Eigen::VectorXd& u) const;
   std::vector<TreadPointState> evaluate(const Eigen::VectorXd& u) const;
 
   const std::vector<TreadPoint>& points() const { return points_; }
-  double stiffness() const { return stiffness_; }
-  const SupportSurface& support() const { return support_; }
 
  private:
   Eigen::Vector3d position(const TreadPoint& p, const Eigen::VectorXd& u) const;
