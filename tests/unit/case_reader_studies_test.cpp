@@ -230,7 +230,7 @@ TEST(CaseReaderStudies, UnknownKeysInSupportsAndStudies) {
   EXPECT_CONTAINS(
       error_of(tyre_with("[[load_curves]]\nname = \"a\"\n")),
       "load_curves: unknown key; expected one of: title, tyre, mesh, inflation, contact, load_curve, "
-      "footprint (did you mean 'load_curve'?)");
+      "footprint, rolling (did you mean 'load_curve'?)");
 }
 
 TEST(CaseReaderStudies, EnumLikeStringsListTheAcceptedValues) {
@@ -347,11 +347,11 @@ TEST(CaseReaderStudies, StudyNames) {
   EXPECT_EQ(error_of(text),
             where(text, "\"drum\"\nsupport = { kind = \"plane\" }\ntheory = \"nonlinear\"\ntarget") +
                 "footprint[0].name: duplicate name \"drum\" (already used by load_curve[1].name); "
-                "load curves and footprints need distinct names");
+                "load curves, footprints and rolling studies need distinct names");
   text = edited("name = \"plane_linear\"", "name = \"plane\"");
   EXPECT_EQ(error_of(text), where(text, "\"plane\"\nsupport = { kind = \"plane\" }\ntheory = \"linear\"") +
                                 "load_curve[2].name: duplicate name \"plane\" (already used by "
-                                "load_curve[0].name); load curves and footprints need distinct names");
+                                "load_curve[0].name); load curves, footprints and rolling studies need distinct names");
   text = edited("name = \"footprint_3700N\"", "name = \"footprint 3700 N\"");
   EXPECT_EQ(error_of(text),
             where(text, "\"footprint 3700 N\"") +
@@ -387,7 +387,7 @@ TEST(CaseReaderStudies, ValidateCaseOnACaseBuiltInCode) {
   c.footprints[0].name = "plane_linear";
   EXPECT_EQ(error(c), file +
                           "footprint[0].name: duplicate name \"plane_linear\" (already used by "
-                          "load_curve[2].name); load curves and footprints need distinct names");
+                          "load_curve[2].name); load curves, footprints and rolling studies need distinct names");
   c = good;
   c.contact.quadrature = 12;
   EXPECT_EQ(error(c), file + "contact.quadrature: must be in [1, 8] (got 12)");

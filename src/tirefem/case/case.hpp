@@ -124,6 +124,45 @@ struct FootprintStudy {
   double load_tolerance = 1e-3;   // |Qz − target| ≤ tolerance · target
 };
 
+// One steady slow-rolling state (MODEL.md §5). The longitudinal slip is κ = (Ω Re − V)/V = Re/Rk − 1
+// (Re the free-rolling effective radius, Rk = V/Ω the rolling radius): κ > 0 traction (the wheel turns
+// faster than it would roll freely), κ < 0 braking, κ = −1 a locked wheel.
+struct RollingStateSpec {
+  enum class Kind {
+    free,          // Rk such that Qy = 0: the effective rolling radius
+    given_slip,    // Rk from the slip κ
+    given_radius,  // Rk given
+    full_stick,    // no slip anywhere (friction unlimited), at the slip κ
+    full_slip,     // the whole patch slides: a spinning (traction) or locked (braking) wheel
+  };
+  Kind kind = Kind::free;
+  std::string name;             // for tables, plots and the summary; defaults to the kind's name
+  double slip = 0.0;            // κ (given_slip, full_stick)
+  double rolling_radius = 0.0;  // Rk, mm (given_radius)
+  bool braking = false;         // full_slip: locked wheel (true) or spinning wheel (false)
+};
+
+// The longitudinal force–slip curve Qy(κ): `points` slips evenly from `from` to `to`.
+struct SlipSweep {
+  double from = -0.1;
+  double to = 0.1;
+  int points = 15;
+};
+
+// Steady slow rolling at the deflection of a footprint: the footprint at target_load is found first
+// (static, as a FootprintStudy), then the axle is held there and the states are solved. The wheel
+// travels in +y (the road moves in −y under it) unless `reverse`.
+struct RollingStudy {
+  std::string name;  // as LoadCurveStudy::name
+  SupportDescription support;  // plane or drum (or a surface that does not depend on y)
+  double target_load = 3700.0;   // N, full tyre, of the static footprint that sets the deflection
+  double load_tolerance = 1e-3;
+  double friction = 0.7;         // Coulomb coefficient μ between tread and support
+  bool reverse = false;          // travel in −y
+  std::vector<RollingStateSpec> states;
+  std::optional<SlipSweep> sweep;
+};
+
 struct Case {
   std::filesystem::path source;  // the file it came from (for messages and relative paths)
   std::string title;
@@ -133,6 +172,7 @@ struct Case {
   ContactSettings contact;
   std::vector<LoadCurveStudy> load_curves;  // [[load_curve]] tables, run in order after inflation
   std::vector<FootprintStudy> footprints;   // [[footprint]] tables
+  std::vector<RollingStudy> rolling;        // [[rolling]] tables
 };
 
 }  // namespace tirefem

@@ -66,6 +66,9 @@ std::string type_name(toml::node_type t) {
 constexpr int kMaxSurfacePower = 8;        // support surface terms: x^p y^q with p, q in [0, 8]
 constexpr int kMaxQuadrature = 8;          // contact: Gauss points per direction
 constexpr double kMaxLoadTolerance = 0.1;  // footprint: relative tolerance on the vertical load
+constexpr double kMaxFriction = 5.0;       // rolling: Coulomb coefficient μ
+constexpr double kMaxSlip = 10.0;          // rolling: longitudinal slip κ (> −1: −1 is a locked wheel)
+constexpr int kMaxSweepPoints = 200;       // rolling: slips in a sweep
 
 // Checks on values, shared by parse_case (which knows where each field is) and validate_case.
 class Checker {
@@ -207,7 +210,7 @@ class Checker {
     }
   }
 
-  // Study names end up in file names: non-empty, [A-Za-z0-9_-], unique among load curves and footprints.
+  // Study names end up in file names: non-empty, [A-Za-z0-9_-], unique among all studies.
   void study_name(const std::string& name, const std::string& path,
                   std::map<std::string, std::string>& seen) const {
     if (name.empty()) fail(path, "must not be empty (it names the study's output files)");
@@ -218,9 +221,77 @@ class Checker {
     if (!plain)
       fail(path, fmt::format("may contain only letters A-Z a-z, digits 0-9, '_' and '-' (got \"{}\")", name));
     if (const auto [it, added] = seen.emplace(name, path); !added)
-      fail(path, fmt::format("duplicate name \"{}\" (already used by {}); load curves and footprints need "
+      fail(path,
+           fmt::format("duplicate name \"{}\" (already used by {}); load curves, footprints and rolling "
+                       "studies need distinct names",
+                       name, it->second));
+  }
+
+  void load(double target_load, double load_tolerance, const std::string& path) const {
+    positive(target_load, join(path, "target_load"));
+    finite(load_tolerance, join(path, "load_tolerance"));
+    if (!(load_tolerance > 0 && load_tolerance < kMaxLoadTolerance))
+      fail(join(path, "load_tolerance"),
+           fmt::format("must be > 0 and < {} (got {})", kMaxLoadTolerance, load_tolerance));
+  }
+
+  void at_most(double v, double hi, const std::string& path) const {
+    if (!(v <= hi)) fail(path, fmt::format("must be ≤ {} (got {})", hi, v));
+  }
+  void slip(double v, const std::string& path) const {
+    finite(v, path);
+    if (!(v > -1)) fail(path, fmt::format("must be > -1 (got {})", v));
+    at_most(v, kMaxSlip, path);
+  }
+
+  void rolling(const RollingStudy& s, const std::string& path) const {
+    using Kind = RollingStateSpec::Kind;
+    const std::string sp = join(path, "support");
+    // The steady state is frozen in the road's frame: the road must look the same all along y.
+    if (s.support.kind == SupportDescription::Kind::surface)
+      for (std::size_t j = 0; j < s.support.terms.size(); ++j)
+        if (const SupportDescription::Term& t = s.support.terms[j]; t.y_power > 0 && t.coefficient != 0.0)
+          fail(
+              join(index(join(sp, "terms"), j), "y_power"),
+              fmt::format("must be 0 where the coefficient is not (got {}): steady rolling needs a road that "
+                          "does not change along y",
+                          t.y_power));
+    load(s.target_load, s.load_tolerance, path);
+    positive(s.friction, join(path, "friction"));
+    at_most(s.friction, kMaxFriction, join(path, "friction"));
+    if (s.states.empty() && !s.sweep)
+      fail(path,
+           "needs states or a sweep (states = [{ state = \"free\" }, ...] or sweep = { from, to, points })");
+    std::map<std::string, std::string> seen;  // state name -> its path
+    for (std::size_t k = 0; k < s.states.size(); ++k) {
+      const RollingStateSpec& st = s.states[k];
+      const std::string p = index(join(path, "states"), k);
+      if (st.kind == Kind::given_slip || st.kind == Kind::full_stick) slip(st.slip, join(p, "slip"));
+      if (st.kind == Kind::given_radius) positive(st.rolling_radius, join(p, "rolling_radius"));
+      const std::string np = join(p, "name");
+      if (st.name.empty())
+        fail(np, "must not be empty (it names the state in tables, plots and the summary)");
+      if (!std::all_of(st.name.begin(), st.name.end(), [](char ch) {
+            return (ch >= 'A' && ch <= 'Z') || (ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9') ||
+                   ch == '_' || ch == '.' || ch == '+' || ch == '-';
+          }))
+        fail(np,
+             fmt::format("may contain only letters A-Z a-z, digits 0-9, '_', '.', '+' and '-' (got \"{}\")",
+                         st.name));
+      if (const auto [it, added] = seen.emplace(st.name, np); !added)
+        fail(np, fmt::format("duplicate state name \"{}\" (already used by {}); the states of a study need "
                              "distinct names",
-                             name, it->second));
+                             st.name, it->second));
+    }
+    if (s.sweep) {
+      const std::string wp = join(path, "sweep");
+      slip(s.sweep->from, join(wp, "from"));
+      slip(s.sweep->to, join(wp, "to"));
+      if (!(s.sweep->from < s.sweep->to))
+        fail(join(wp, "to"),
+             fmt::format("must be greater than from = {} (got {})", s.sweep->from, s.sweep->to));
+      int_range(s.sweep->points, 2, kMaxSweepPoints, join(wp, "points"));
+    }
   }
 
   void studies(const Case& c) const {
@@ -238,11 +309,13 @@ class Checker {
       const std::string p = index("footprint", i);
       study_name(s.name, join(p, "name"), seen);
       support(s.support, join(p, "support"));
-      positive(s.target_load, join(p, "target_load"));
-      finite(s.load_tolerance, join(p, "load_tolerance"));
-      if (!(s.load_tolerance > 0 && s.load_tolerance < kMaxLoadTolerance))
-        fail(join(p, "load_tolerance"),
-             fmt::format("must be > 0 and < {} (got {})", kMaxLoadTolerance, s.load_tolerance));
+      load(s.target_load, s.load_tolerance, p);
+    }
+    for (std::size_t i = 0; i < c.rolling.size(); ++i) {
+      const std::string p = index("rolling", i);
+      study_name(c.rolling[i].name, join(p, "name"), seen);
+      support(c.rolling[i].support, join(p, "support"));
+      rolling(c.rolling[i], p);
     }
   }
 
@@ -669,18 +742,18 @@ class Reader {
     return s;
   }
 
-  // Fields common to [[load_curve]] and [[footprint]].
+  // Fields common to all studies; `theory` only where the study has a linear variant.
   template <class Study>
   void study_common(const toml::table& t, const std::string& path, Study& s) {
-    s.name =
-        string(need(t, path, "name", "a string ([A-Za-z0-9_-], unique among load curves and footprints)"),
-               join(path, "name"));
+    s.name = string(need(t, path, "name", "a string ([A-Za-z0-9_-], unique among all studies)"),
+                    join(path, "name"));
     s.support = support(need(t, path, "support",
                              "a table { kind = \"plane\" }, { kind = \"drum\", diameter = mm } or "
                              "{ kind = \"surface\", terms = [...] }"),
                         join(path, "support"));
-    if (const toml::node* v = get(t, path, "theory"))
-      s.linear = choice(*v, join(path, "theory"), {"nonlinear", "linear"}) == 1;
+    if constexpr (requires { s.linear; })
+      if (const toml::node* v = get(t, path, "theory"))
+        s.linear = choice(*v, join(path, "theory"), {"nonlinear", "linear"}) == 1;
   }
 
   LoadCurveStudy load_curve(const toml::node& n, const std::string& path) {
@@ -701,9 +774,110 @@ class Reader {
     return s;
   }
 
+  // [[rolling]]: steady rolling at the deflection of a static footprint at target_load.
+  //   name, support              as for [[footprint]]; a surface support must not depend on y
+  //   target_load                N (default 3700); load_tolerance as for [[footprint]] (default 1e-3)
+  //   friction                   Coulomb coefficient μ between tread and support, in (0, 5] (default 0.7)
+  //   reverse                    true: the wheel travels in −y (default false)
+  //   states                     [{ state = ..., name = ... }, ...], the state's keys by kind:
+  //                                "free"                                   (Qy = 0)
+  //                                "given_slip",   slip = κ (required)      κ in (−1, 10]
+  //                                "given_radius", rolling_radius = mm (required)
+  //                                "full_stick",   slip = κ (default 0)
+  //                                "full_slip",    wheel = "spinning" (default) or "locked"
+  //                              name: [A-Za-z0-9_.+-], unique in the study; default "free", "slip_0.05",
+  //                              "radius_280", "full_stick", "full_slip_spinning" / "full_slip_locked"
+  //   sweep                      { from = -0.1, to = 0.1, points = 15 }: Qy(κ) at `points` (2..200) slips
+  //                              evenly in [from, to], −1 < from < to ≤ 10
+  // At least one state or a sweep.
+  RollingStudy rolling(const toml::node& n, const std::string& path) {
+    const toml::table& t =
+        table(n, path,
+              {"name", "support", "target_load", "load_tolerance", "friction", "reverse", "states", "sweep"});
+    RollingStudy s;
+    study_common(t, path, s);
+    opt_number(t, path, "target_load", s.target_load, " (N)");
+    opt_number(t, path, "load_tolerance", s.load_tolerance, " (relative)");
+    opt_number(t, path, "friction", s.friction, " (Coulomb coefficient μ)");
+    opt_bool(t, path, "reverse", s.reverse);
+    if (const toml::node* v = get(t, path, "states")) {
+      const std::string sp = join(path, "states");
+      const toml::array& a = array(*v, sp, "states { state = \"free\", ... }");
+      for (std::size_t i = 0; i < a.size(); ++i) s.states.push_back(rolling_state(a[i], index(sp, i)));
+    }
+    if (const toml::node* v = get(t, path, "sweep")) {
+      const std::string sp = join(path, "sweep");
+      const toml::table& w = table(*v, sp, {"from", "to", "points"});
+      SlipSweep sw;
+      opt_number(w, sp, "from", sw.from, " (slip κ)");
+      opt_number(w, sp, "to", sw.to, " (slip κ)");
+      opt_integer(w, sp, "points", sw.points);
+      s.sweep = sw;
+    }
+    return s;
+  }
+
+  // The keys allowed depend on the state, as for supports.
+  RollingStateSpec rolling_state(const toml::node& n, const std::string& path) {
+    using Kind = RollingStateSpec::Kind;
+    positions_[path] = n.source().begin;
+    const toml::table* raw = n.as_table();
+    if (!raw)
+      fail(path, fmt::format("must be a table {{ state = \"free\", ... }} (got {})", type_name(n.type())));
+    if (!raw->contains("state"))  // a misspelt state: "did you mean"
+      table(n, path, {"state", "name", "slip", "rolling_radius", "wheel"});
+    RollingStateSpec s;
+    s.kind = static_cast<Kind>(
+        choice(need(*raw, path, "state",
+                    "\"free\", \"given_slip\", \"given_radius\", \"full_stick\" or \"full_slip\""),
+               join(path, "state"),
+               {"free", "given_slip", "given_radius", "full_stick", "full_slip"}));  // enum order
+    static constexpr std::string_view kind_names[] = {"free", "given_slip", "given_radius", "full_stick",
+                                                      "full_slip"};
+    const std::string_view kind = kind_names[static_cast<int>(s.kind)];
+    const std::string_view own = s.kind == Kind::given_slip || s.kind == Kind::full_stick ? "slip"
+                                 : s.kind == Kind::given_radius                           ? "rolling_radius"
+                                 : s.kind == Kind::full_slip                              ? "wheel"
+                                                                                          : "";
+    for (auto&& [k, v] : *raw) {  // a key of another state (typos: table() below)
+      if (k.str() == own || (k.str() != "slip" && k.str() != "rolling_radius" && k.str() != "wheel"))
+        continue;
+      positions_[join(path, k.str())] = k.source().begin;
+      fail(join(path, k.str()), fmt::format("not allowed in a \"{}\" state (it takes {})", kind,
+                                            own.empty() ? std::string("only state and name")
+                                                        : fmt::format("state, name and {}", own)));
+    }
+    const toml::table& t =
+        own.empty() ? table(n, path, {"state", "name"}) : table(n, path, {"state", "name", own});
+    switch (s.kind) {
+      case Kind::free:
+        s.name = "free";
+        break;
+      case Kind::given_slip:
+        s.slip = req_number(t, path, "slip", " (slip κ)");
+        s.name = fmt::format("slip_{:g}", s.slip);
+        break;
+      case Kind::given_radius:
+        s.rolling_radius = req_number(t, path, "rolling_radius", " (mm)");
+        s.name = fmt::format("radius_{:g}", s.rolling_radius);
+        break;
+      case Kind::full_stick:
+        opt_number(t, path, "slip", s.slip, " (slip κ)");
+        s.name = "full_stick";
+        break;
+      case Kind::full_slip:
+        if (const toml::node* v = get(t, path, "wheel"))
+          s.braking = choice(*v, join(path, "wheel"), {"spinning", "locked"}) == 1;
+        s.name = s.braking ? "full_slip_locked" : "full_slip_spinning";
+        break;
+    }
+    if (const toml::node* v = get(t, path, "name")) s.name = string(*v, join(path, "name"));
+    return s;
+  }
+
   Case read(const toml::table& root) {
-    const toml::table& r =
-        table(root, "", {"title", "tyre", "mesh", "inflation", "contact", "load_curve", "footprint"});
+    const toml::table& r = table(
+        root, "", {"title", "tyre", "mesh", "inflation", "contact", "load_curve", "footprint", "rolling"});
     Case c;
     if (const toml::node* v = get(r, "", "title")) c.title = string(*v, "title");
     c.tyre = tyre(need(r, "", "tyre", "a table [tyre]"), "tyre");
@@ -736,6 +910,10 @@ class Reader {
       const toml::array& a = array(*v, "footprint", "tables [[footprint]]");
       for (std::size_t i = 0; i < a.size(); ++i)
         c.footprints.push_back(footprint(a[i], index("footprint", i)));
+    }
+    if (const toml::node* v = get(r, "", "rolling")) {
+      const toml::array& a = array(*v, "rolling", "tables [[rolling]]");
+      for (std::size_t i = 0; i < a.size(); ++i) c.rolling.push_back(rolling(a[i], index("rolling", i)));
     }
     return c;
   }

@@ -28,6 +28,7 @@ std::vector<TreadPoint> make_tread_points(const ShellMesh& mesh, const std::vect
         p.v = v0 + 0.5 * (1 + eta) * (v1 - v0);
         const double hp = tread_height(p.u);
         if (hp < 0) continue;
+        p.height = hp;
         const auto outer = x.rightCols<4>();
         const Eigen::Vector3d breaker = outer * sh.n;
         const Eigen::Vector3d a1 = outer * sh.dn_dxi, a2 = outer * sh.dn_deta;

@@ -33,6 +33,7 @@ struct TreadPoint {
   Eigen::Vector3d reference = Eigen::Vector3d::Zero();  // r0 on the tread surface
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();     // unit normal of the breaker face (reference)
   double weight = 0.0;  // breaker-face area the point stands for, mm²
+  double height = 0.0;  // tread height hp at the point, mm
   double u = 0.0, v = 0.0;  // mesh parameters of the point (on the tyre: s in mm and φ in rad)
 };
 
@@ -65,6 +66,10 @@ class WinklerContactForm final : public Form {
   void freeze_region(std::vector<char> region);
   // Single-loop iteration: the region is {g > 0} at each iterate.
   void release_region() { frozen_.clear(); }
+
+  const std::vector<char>& frozen_region() const { return frozen_; }  // empty when released
+  double stiffness() const { return stiffness_; }
+  const SupportSurface& support() const { return support_; }
 
   // {g > 0} at the displacement u: the region the outer loop proposes.
   std::vector<char> region(const Eigen::VectorXd& u) const;

@@ -7,6 +7,13 @@
 
 namespace tirefem {
 
+TravelCoordinate SupportSurface::travel(const Eigen::Vector3d& x, double) const {
+  TravelCoordinate t;
+  t.value = x.y();
+  t.gradient = Eigen::Vector3d::UnitY();
+  return t;
+}
+
 Penetration RoadPlane::penetration(const Eigen::Vector3d& x, double deflection) const {
   Penetration p;
   p.value = deflection - x.z();
@@ -33,6 +40,19 @@ Penetration TestDrum::penetration(const Eigen::Vector3d& x, double deflection) c
   projector(1, 1) = projector(2, 2) = 1.0;
   p.hessian = -(projector - n * n.transpose()) / distance;
   return p;
+}
+
+TravelCoordinate TestDrum::travel(const Eigen::Vector3d& x, double deflection) const {
+  // ξ = R atan2(y, w), w = z − z_axis: the arc length along the drum's surface from its top.
+  const double y = x.y(), w = x.z() - (deflection - radius_);
+  const double rho2 = y * y + w * w, rho4 = rho2 * rho2;
+  TravelCoordinate t;
+  t.value = radius_ * std::atan2(y, w);
+  t.gradient = Eigen::Vector3d(0.0, radius_ * w / rho2, -radius_ * y / rho2);
+  t.hessian(1, 1) = -2.0 * radius_ * y * w / rho4;
+  t.hessian(2, 2) = 2.0 * radius_ * y * w / rho4;
+  t.hessian(1, 2) = t.hessian(2, 1) = radius_ * (y * y - w * w) / rho4;
+  return t;
 }
 
 double TestDrum::height(double, double y, double deflection) const {
@@ -71,6 +91,12 @@ Penetration PolynomialRoad::penetration(const Eigen::Vector3d& x, double deflect
   p.gradient = Eigen::Vector3d(fx, fy, -1.0);
   p.hessian << fxx, fxy, 0, fxy, fyy, 0, 0, 0, 0;
   return p;
+}
+
+bool PolynomialRoad::depends_on_travel() const {
+  for (const auto& t : terms_)
+    if (t.y_power > 0 && t.coefficient != 0.0) return true;
+  return false;
 }
 
 double PolynomialRoad::height(double x, double y, double deflection) const {

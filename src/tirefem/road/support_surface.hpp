@@ -21,11 +21,22 @@ struct Penetration {
   Eigen::Matrix3d hessian = Eigen::Matrix3d::Zero();        // ∂²g/∂x²
 };
 
+// Where a point lies along the support's motion in steady rolling (MODEL.md §5): the arc length ξ of its
+// projection on the support, measured along the direction in which the support moves when it moves in
+// +y under the tyre, with derivatives. Plane and road: ξ = y; drum: R × the angle about the drum axis.
+struct TravelCoordinate {
+  double value = 0.0;
+  Eigen::Vector3d gradient = Eigen::Vector3d::Zero();  // ∂ξ/∂x: along the support's motion (|·| ≈ 1)
+  Eigen::Matrix3d hessian = Eigen::Matrix3d::Zero();
+};
+
 class SupportSurface {
  public:
   virtual ~SupportSurface() = default;
   // Penetration of the point x when the support has been moved up by `deflection`.
   virtual Penetration penetration(const Eigen::Vector3d& x, double deflection) const = 0;
+  // Travel coordinate of x (the road translates in y, the drum turns about its axis).
+  virtual TravelCoordinate travel(const Eigen::Vector3d& x, double deflection) const;
   // Height of the support surface above (x, y) (for drawing it), with the same deflection.
   virtual double height(double x, double y, double deflection) const = 0;
 };
@@ -44,6 +55,7 @@ class TestDrum final : public SupportSurface {
  public:
   explicit TestDrum(double radius);
   Penetration penetration(const Eigen::Vector3d& x, double deflection) const override;
+  TravelCoordinate travel(const Eigen::Vector3d& x, double deflection) const override;
   double height(double x, double y, double deflection) const override;
   double radius() const { return radius_; }
 
@@ -53,10 +65,13 @@ class TestDrum final : public SupportSurface {
 
 // z = f(x, y) + δz with f a polynomial Σ c x^i y^j; the penetration is the vertical one,
 // g = f(x, y) + δz − z (eq. 1 before linearisation), whose gradient (ψx, ψy, −1) is the paper's −n.
+// Steady rolling on it makes sense only when f does not depend on y (a road that translates in y stays
+// the same road): depends_on_travel() says whether it does.
 class PolynomialRoad final : public SupportSurface {
  public:
   explicit PolynomialRoad(std::vector<SupportDescription::Term> terms);
   Penetration penetration(const Eigen::Vector3d& x, double deflection) const override;
+  bool depends_on_travel() const;
   double height(double x, double y, double deflection) const override;
 
  private:

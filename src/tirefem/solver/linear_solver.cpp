@@ -57,6 +57,9 @@ void SparseDirectSolver::factorize(const SparseMatrix& matrix) {
     if (++s.cholesky_failures >= 2 && s.sticky_lu) s.use_lu = true;
   }
   if (!s.lu_analysed) {
+    // No iterative refinement in UMFPACK's solve: it triples the cost of each solve, and Newton (or
+    // GMRES around a reused factorisation) corrects the residual anyway.
+    s.lu.umfpackControl()(UMFPACK_IRSTEP) = 0;
     const auto t0 = std::chrono::steady_clock::now();
     s.lu.analyzePattern(matrix);
     s.lu_analysed = true;
@@ -82,6 +85,7 @@ Eigen::VectorXd SparseDirectSolver::solve(const Eigen::VectorXd& rhs) {
 }
 
 bool SparseDirectSolver::has_factorization() const { return impl_->factorized; }
+bool SparseDirectSolver::uses_lu() const { return impl_->use_lu; }
 
 double SparseDirectSolver::factorize_shifted(const SparseMatrix& matrix) {
   auto& s = *impl_;

@@ -36,6 +36,8 @@ class SparseDirectSolver {
   void factorize(const SparseMatrix& matrix);
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
   bool has_factorization() const;
+  // True when every factorisation is an LU (an unsymmetric problem, or a sticky switch after indefinite ones).
+  bool uses_lu() const;
 
   // A Cholesky factorisation of A + σI for use as a preconditioner (solve_preconditioned): σ = 0 when A
   // is positive definite, else the smallest tried of σ₀, 10σ₀, … (σ₀ = 1e-4 × mean |diagonal|, starting

@@ -69,6 +69,11 @@ bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du)
     if (linear_.solve_preconditioned(tangent, rhs, du, settings_.krylov_tolerance,
                                      settings_.max_krylov_iterations))
       return true;
+    if (linear_.uses_lu()) {  // unsymmetric: a fresh LU of the current tangent
+      linear_.factorize(tangent);
+      du = linear_.solve(rhs);
+      return du.allFinite();
+    }
     if (linear_.factorize_shifted(tangent) == 0.0) {
       du = linear_.solve(rhs);
       return du.allFinite();

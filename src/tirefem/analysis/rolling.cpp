@@ -1,0 +1,511 @@
+#include "tirefem/analysis/rolling.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "tirefem/forms/pressure_form.hpp"
+#include "tirefem/forms/shell_internal_force.hpp"
+
+namespace tirefem {
+
+RollingFigures rolling_figures(const std::vector<TreadPoint>& points, const std::vector<TreadPointState>& normal,
+                               const std::vector<TreadTraction>& tangential, double axle_z, bool half_model,
+                               bool reverse) {
+  RollingFigures f;
+  double stick_area = 0.0, moment = 0.0;
+  for (std::size_t q = 0; q < points.size(); ++q) {
+    const Eigen::Vector3d force = normal[q].force + tangential[q].force;
+    const Eigen::Vector3d& x = normal[q].position;
+    f.force_N += force;
+    moment += x.y() * force.z() - (x.z() - axle_z) * force.y();  // (r − r_axle) × F, x component
+    if (normal[q].pressure > 0) {
+      f.contact_area_mm2 += points[q].weight;
+      if (tangential[q].status == TreadContact::stick) stick_area += points[q].weight;
+    }
+    if (tangential[q].status != TreadContact::out)
+      f.max_traction_MPa = std::max(f.max_traction_MPa, std::abs(tangential[q].traction));
+  }
+  f.stick_area_fraction = f.contact_area_mm2 > 0 ? stick_area / f.contact_area_mm2 : 0.0;
+  if (half_model) {  // the mirror image in x = 0 doubles all but the lateral force
+    f.force_N *= 2.0;
+    f.force_N.x() = 0.0;
+    moment *= 2.0;
+    f.contact_area_mm2 *= 2.0;
+  }
+  // A reversed study is the mirror image (y → −y) of a forward one: report its figures in that frame.
+  const double sign = reverse ? -1.0 : 1.0;
+  f.Qz_N = f.force_N.z();
+  f.Qy_N = sign * f.force_N.y();
+  f.Mx_Nmm = sign * moment;
+  return f;
+}
+
+namespace {
+int count_plan_changes(const FrictionPlan& a, const FrictionPlan& b) {
+  int n = 0;
+  for (std::size_t k = 0; k < a.size(); ++k) n += a[k].status != b[k].status || a[k].sign != b[k].sign;
+  return n;
+}
+int count_changes(const std::vector<char>& a, const std::vector<char>& b) {
+  int n = 0;
+  for (std::size_t k = 0; k < a.size(); ++k) n += (a[k] != 0) != (b[k] != 0);
+  return n;
+}
+
+ContactSolveOutcome two_level(NewtonSolver& newton, WinklerContactForm& contact, TreadFrictionForm& friction,
+                              Eigen::VectorXd& u, const ContactSettings& settings) {
+  // As solve_contact's two-level loop, the outer loop revising the contact region (eq. 5) and the
+  // stick/slip plan (eq. 15) together (MODEL.md §5).
+  ContactSolveOutcome out;
+  const double final_tolerance = newton.residual_tolerance();
+  const double provisional = std::max(settings.provisional_tolerance, final_tolerance);
+  std::vector<char> region = contact.region(u);
+  FrictionPlan plan = friction.plan(u, region);
+  bool settled = false;
+  for (int outer = 1; outer <= settings.max_contact_iterations; ++outer) {
+    contact.freeze_region(region);
+    friction.freeze_plan(plan);
+    newton.set_residual_tolerance(settled ? final_tolerance : provisional);
+    const NewtonOutcome n = newton.solve(u, 1.0);
+    newton.set_residual_tolerance(final_tolerance);
+    out.contact_iterations = outer;
+    out.newton_iterations += n.iterations;
+    if (!n.converged) {
+      out.failure = fmt::format("Newton in contact iteration {}: residual {:.1e} after {} iterations", outer,
+                                n.relative_residual, n.iterations);
+      break;
+    }
+    std::vector<char> revised_region = contact.region(u);
+    FrictionPlan revised_plan = friction.plan(u, revised_region);
+    out.region_changes = count_changes(region, revised_region) + count_plan_changes(plan, revised_plan);
+    region = std::move(revised_region);
+    plan = std::move(revised_plan);
+    if (out.region_changes <= settings.region_tolerance) {
+      if (settled || provisional <= final_tolerance) {
+        out.converged = true;
+        break;
+      }
+      settled = true;
+    } else {
+      settled = false;
+    }
+  }
+  if (!out.converged && out.failure.empty())
+    out.failure = fmt::format("contact region and stick/slip zones not settled after {} iterations ({} points "
+                              "still changing)", settings.max_contact_iterations, out.region_changes);
+  contact.release_region();
+  friction.release_plan();
+  return out;
+}
+}  // namespace
+
+ContactSolveOutcome solve_rolling_state(NewtonSolver& newton, WinklerContactForm& contact,
+                                        TreadFrictionForm& friction, Eigen::VectorXd& u,
+                                        const ContactSettings& settings) {
+  if (settings.iteration == ContactSettings::Iteration::two_level)
+    return two_level(newton, contact, friction, u, settings);
+  const Eigen::VectorXd start = u;
+  contact.release_region();
+  friction.release_plan();
+  const NewtonOutcome n = newton.solve(u, 1.0);
+  if (n.converged) return {true, 1, n.iterations, 0, {}};
+  // The plan may cycle between iterates near a stick/slip boundary: the two-level loop settles it.
+  u = start;
+  ContactSolveOutcome out = two_level(newton, contact, friction, u, settings);
+  out.newton_iterations += n.iterations;
+  return out;
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// Points that may touch the support while rolling: the static patch's angular extent along the flow,
+// widened by 30% of its length and two elements on each side (the patch moves and grows little).
+std::vector<char> friction_window(const ShellMesh& mesh, const std::vector<TreadPoint>& points,
+                                  const std::vector<TreadPointState>& states) {
+  double lo = 1e300, hi = -1e300;
+  for (std::size_t q = 0; q < points.size(); ++q)
+    if (states[q].pressure > 0) lo = std::min(lo, points[q].v), hi = std::max(hi, points[q].v);
+  double element_angle = 0.0;
+  for (int j = 0; j + 1 < static_cast<int>(mesh.v_values.size()); ++j)
+    if (mesh.v_values[j] <= 0.0 && mesh.v_values[j + 1] >= 0.0) element_angle = mesh.v_values[j + 1] - mesh.v_values[j];
+  const double margin = 0.3 * (hi - lo) + 2.0 * element_angle;
+  std::vector<char> window(points.size());
+  for (std::size_t q = 0; q < points.size(); ++q) window[q] = points[q].v >= lo - margin && points[q].v <= hi + margin;
+  return window;
+}
+
+// The inflated, statically loaded tyre with the tread's friction: forms, the Newton solver (LU) and the
+// converged rolling states for predictions.
+class RollingModel {
+ public:
+  RollingModel(const TyreMesh& tm, const TyreDescription& tyre, const InflationSettings& inflation,
+               const ContactSettings& settings, const RollingStudy& study, RollingResult& result)
+      : tm_(tm), settings_(settings), result_(result), support_(make_support(study.support)) {
+    const StaticContactResult& fp = result.footprint;
+    DofMap dofs(tm.mesh.dof_count());
+    dofs.fix(tm.fixed_dofs);
+    std::vector<std::unique_ptr<Form>> forms;
+    forms.push_back(std::make_unique<ShellInternalForce>(tm.mesh, tm.sections, Kinematics::nonlinear));
+    forms.push_back(std::make_unique<PressureForm>(tm.mesh, tm.pressure_elements, inflation.pressure,
+                                                   Kinematics::nonlinear, /*symmetrize=*/true));
+    auto contact = std::make_unique<WinklerContactForm>(tm.mesh, fp.tread_points, tyre.tread_stiffness, *support_);
+    contact_ = contact.get();
+    forms.push_back(std::move(contact));
+    // The vehicle travels in +y: the support moves in −y under the tyre (reversed: +y).
+    auto friction = std::make_unique<TreadFrictionForm>(
+        tm.mesh, contact_->points(), tyre.tread_stiffness, tyre.tread_shear_modulus, *support_,
+        study.reverse ? 1 : -1, friction_window(tm.mesh, contact_->points(), fp.final_state.tread));
+    friction_ = friction.get();
+    forms.push_back(std::move(friction));
+    problem_ = std::make_unique<NonlinearProblem>(std::move(dofs), std::move(forms));
+    problem_->load_scale();  // inflation load, before the support is raised (as in the static run)
+    NewtonSettings ns;
+    ns.max_iterations = settings.max_newton_iterations;
+    ns.residual_tolerance = settings.residual_tolerance;
+    ns.reuse_factorization = true;
+    newton_ = std::make_unique<NewtonSolver>(*problem_, ns);
+    contact_->set_deflection(fp.final_state.deflection_mm);
+    friction_->set_deflection(fp.final_state.deflection_mm);
+    base_ = fp.final_state.displacement;
+    result.tread_points = contact_->points();
+  }
+
+  struct Solved {
+    bool converged = false;
+    std::string failure;
+    RollingFigures figures;
+    RollingSolveCounts counts;
+    Eigen::VectorXd u;
+  };
+
+  // Solves with the given law at Rk, from the nearest converged Coulomb state (predicted), with halving
+  // continuation in 1/Rk (Coulomb, full stick) or in μ (full slip) from that state when a solve fails.
+  Solved solve(const FrictionLaw& law, double rolling_radius) {
+    const auto t0 = Clock::now();
+    const int factorizations0 = newton_->linear_stats().factorizations;
+    const int newton0 = newton_->total_iterations();
+    Solved s;
+    const double target = 1.0 / rolling_radius;
+    const Known* from = nearest(target);
+    double done = 0.0, step = 1.0;  // continuation parameter from the start state (0) to the target (1)
+    Eigen::VectorXd u = from ? from->u : base_;
+    const double p0 = from ? from->inverse_radius : target;
+    int cutbacks = 0;
+    ContactSolveOutcome last;
+    while (done < 1.0) {
+      const double t = std::min(1.0, done + step);
+      FrictionLaw stage = law;
+      double p = target;
+      if (law.mode == FrictionLaw::Mode::full_slip) stage.friction = law.friction * t;
+      else p = p0 + t * (target - p0);
+      friction_->set_law(stage);
+      friction_->set_rolling_radius(1.0 / p);
+      Eigen::VectorXd trial = law.mode == FrictionLaw::Mode::coulomb ? predict(p, u) : u;
+      last = solve_rolling_state(*newton_, *contact_, *friction_, trial, settings_);
+      ++s.counts.solves;
+      if (last.converged && friction_->contact_outside_window(trial) > 0) {
+        last.converged = false;
+        last.failure = "the contact patch grew beyond the friction window";
+        cutbacks = 6;  // not a convergence problem: do not cut back
+      }
+      if (!last.converged) {
+        if (++cutbacks > 5) {
+          s.failure = last.failure;
+          break;
+        }
+        step *= 0.5;
+        continue;
+      }
+      u = std::move(trial);
+      done = t;
+      if (law.mode == FrictionLaw::Mode::coulomb) known_.push_back({p, u});
+    }
+    s.converged = done >= 1.0;
+    s.counts.contact_iterations = last.contact_iterations;
+    s.counts.newton_iterations = newton_->total_iterations() - newton0;
+    s.counts.factorizations = newton_->linear_stats().factorizations - factorizations0;
+    s.counts.time_s = seconds_since(t0);
+    if (s.converged) {
+      s.figures = figures(u);
+      s.u = std::move(u);
+    }
+    return s;
+  }
+
+  RollingFigures figures(const Eigen::VectorXd& u) const {
+    return rolling_figures(contact_->points(), contact_->evaluate(u), friction_->evaluate(u), tm_.axis_z,
+                           tm_.half_model, result_.reverse);
+  }
+  // Qy of a full-stick plan at the static state for Rk (no solve): affine in Rk, it estimates Re.
+  double static_full_stick_Qy(double rolling_radius) {
+    FrictionLaw law;
+    law.mode = FrictionLaw::Mode::full_stick;
+    friction_->set_law(law);
+    friction_->set_rolling_radius(rolling_radius);
+    return figures(base_).Qy_N;
+  }
+  void fill(RollingStateResult& state, const Solved& s) {
+    state.converged = s.converged;
+    state.failure = s.failure;
+    state.figures = s.figures;
+    state.counts = s.counts;
+    if (!s.converged) return;
+    state.displacement = s.u;
+    state.normal = contact_->evaluate(s.u);
+    state.tangential = friction_->evaluate(s.u);
+  }
+  void finish(SolveCounters& c) const {
+    c.newton_iterations = newton_->total_iterations();
+    c.factorizations = newton_->linear_stats().factorizations;
+    c.analysis_s = newton_->linear_stats().analysis_s;
+    c.factorization_s = newton_->linear_stats().factorization_s;
+    c.solve_s = newton_->linear_stats().solve_s;
+    c.used_lu = newton_->linear_stats().used_lu;
+    c.krylov_solves = newton_->linear_stats().krylov_solves;
+    c.krylov_failures = newton_->linear_stats().krylov_failures;
+    c.krylov_iterations = newton_->linear_stats().krylov_iterations;
+    c.krylov_s = newton_->linear_stats().krylov_s;
+    c.assemblies = problem_->stats().assemblies;
+    c.assembly_s = problem_->stats().assembly_s;
+  }
+
+ private:
+  struct Known {
+    double inverse_radius;
+    Eigen::VectorXd u;
+  };
+  const Known* nearest(double p, const Known* other = nullptr) const {
+    const Known* best = nullptr;
+    for (const Known& k : known_)
+      if (&k != other && (!other || std::abs(k.inverse_radius - other->inverse_radius) > 1e-15) &&
+          (!best || std::abs(k.inverse_radius - p) < std::abs(best->inverse_radius - p)))
+        best = &k;
+    return best;
+  }
+  // Secant in 1/Rk (linear in κ) through the two nearest converged states; else the start.
+  Eigen::VectorXd predict(double p, const Eigen::VectorXd& start) const {
+    const Known* a = nearest(p);
+    const Known* b = a ? nearest(p, a) : nullptr;
+    if (!a || !b) return start;
+    const double t = (p - a->inverse_radius) / (b->inverse_radius - a->inverse_radius);
+    return a->u + t * (b->u - a->u);
+  }
+
+  const TyreMesh& tm_;
+  ContactSettings settings_;
+  RollingResult& result_;
+  std::unique_ptr<SupportSurface> support_;
+  WinklerContactForm* contact_ = nullptr;
+  TreadFrictionForm* friction_ = nullptr;
+  std::unique_ptr<NonlinearProblem> problem_;
+  std::unique_ptr<NewtonSolver> newton_;
+  Eigen::VectorXd base_;  // the static footprint
+  std::vector<Known> known_;
+};
+
+const char* kind_name(RollingStateSpec::Kind k) {
+  switch (k) {
+    case RollingStateSpec::Kind::free: return "free";
+    case RollingStateSpec::Kind::given_slip: return "given_slip";
+    case RollingStateSpec::Kind::given_radius: return "given_radius";
+    case RollingStateSpec::Kind::full_stick: return "full_stick";
+    case RollingStateSpec::Kind::full_slip: return "full_slip";
+  }
+  return "?";
+}
+
+// Free rolling: secant iteration on Rk for Qy = 0 (|Qy| ≤ 1e-4 Qz), started from the rigid-tread estimate
+// of the static state. Returns the state; sets Re and the slip stiffness dQy/dκ (least squares over the
+// iterates within |κ| ≤ 0.003, else the last secant) in the result.
+RollingStateResult free_rolling(RollingModel& model, const RollingStudy& study, RollingResult& result,
+                                const ProgressSink& progress) {
+  RollingStateResult state;
+  state.spec.kind = RollingStateSpec::Kind::free;
+  state.name = "free";
+  FrictionLaw law;
+  law.friction = study.friction;
+  const double a = result.loaded_radius_mm, b = result.axle_z;
+  const double qa = model.static_full_stick_Qy(a), qb = model.static_full_stick_Qy(b);
+  double rk = qa != qb ? a - qa * (b - a) / (qb - qa) : 0.5 * (a + b);
+  std::vector<std::pair<double, double>> tried;  // (Rk, Qy)
+  RollingModel::Solved s;
+  RollingSolveCounts total;
+  double slope = (qb - qa) / (b - a);
+  for (int it = 0; it < 15; ++it) {
+    s = model.solve(law, rk);
+    total.newton_iterations += s.counts.newton_iterations;
+    total.factorizations += s.counts.factorizations;
+    total.solves += s.counts.solves;
+    total.time_s += s.counts.time_s;
+    total.contact_iterations = s.counts.contact_iterations;
+    if (!s.converged) break;
+    tried.emplace_back(rk, s.figures.Qy_N);
+    if (progress)
+      progress(fmt::format("  free rolling: Rk {:.4f} mm → Qy {:+.2f} N", rk, s.figures.Qy_N));
+    if (std::abs(s.figures.Qy_N) <= 1e-4 * std::abs(s.figures.Qz_N)) break;
+    if (tried.size() >= 2) {
+      const auto& [r0, q0] = tried[tried.size() - 2];
+      if (q0 != s.figures.Qy_N) slope = (s.figures.Qy_N - q0) / (rk - r0);
+    }
+    rk -= s.figures.Qy_N / slope;
+  }
+  s.counts = total;
+  model.fill(state, s);
+  if (!state.converged || std::abs(s.figures.Qy_N) > 1e-4 * std::abs(s.figures.Qz_N)) {
+    state.converged = false;
+    if (state.failure.empty()) state.failure = "the free-rolling radius was not found in 15 secant steps";
+    return state;
+  }
+  const double re = rk;
+  result.effective_rolling_radius_mm = re;
+  state.rolling_radius_mm = re;
+  state.slip = 0.0;
+  // dQy/dκ = dQy/dRk · dRk/dκ, dRk/dκ = −Re at κ = 0.
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  int n = 0;
+  for (const auto& [r, q] : tried)
+    if (std::abs(re / r - 1.0) <= 0.003) sx += r, sy += q, sxx += r * r, sxy += r * q, ++n;
+  if (n >= 2 && n * sxx - sx * sx > 0) slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  result.slip_stiffness_N = -re * slope;
+  return state;
+}
+
+}  // namespace
+
+RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const InflationSettings& inflation,
+                          const ContactSettings& contact, const RollingStudy& study, const ProgressSink& progress) {
+  const auto t0 = Clock::now();
+  RollingResult r;
+  r.name = study.name;
+  r.support = study.support;
+  r.friction = study.friction;
+  r.reverse = study.reverse;
+  r.half_model = tm.half_model;
+  if (progress)
+    progress(fmt::format("rolling '{}': {}, μ = {}, travel {}, at the footprint of Qz = {} N", study.name,
+                         support_label(study.support), study.friction, study.reverse ? "-y" : "+y",
+                         study.target_load));
+  FootprintStudy fs;
+  fs.name = study.name;
+  fs.support = study.support;
+  fs.target_load = study.target_load;
+  fs.load_tolerance = study.load_tolerance;
+  r.footprint = run_footprint(tm, tyre, inflation, contact, fs, progress);
+  if (!r.footprint.completed) {
+    r.failure = "static footprint: " + r.footprint.failure;
+    return r;
+  }
+  const auto t_rolling = Clock::now();
+  r.deflection_mm = r.footprint.final_state.deflection_mm;
+  r.axle_z = tm.axis_z;
+  r.loaded_radius_mm = tm.axis_z - r.deflection_mm;
+  RollingModel model(tm, tyre, inflation, contact, study, r);
+
+  const RollingStateResult free = free_rolling(model, study, r, progress);
+  if (!free.converged) {
+    r.failure = "free rolling: " + free.failure;
+    r.states.push_back(free);
+    model.finish(r.counters);
+    r.counters.wall_s = seconds_since(t_rolling);
+    return r;
+  }
+  const double re = *r.effective_rolling_radius_mm;
+  if (progress)
+    progress(fmt::format("  free rolling: Re = {:.3f} mm (Rd = {:.3f} mm), slip stiffness {:.0f} N, {} Newton "
+                         "iterations, {:.2f} s", re, r.loaded_radius_mm, r.slip_stiffness_N.value_or(0.0),
+                         free.counts.newton_iterations, free.counts.time_s));
+  bool ok = true;
+  for (const RollingStateSpec& spec : study.states) {
+    RollingStateResult state;
+    state.spec = spec;
+    state.name = spec.name.empty() ? kind_name(spec.kind) : spec.name;
+    if (spec.kind == RollingStateSpec::Kind::free) {
+      const std::string name = state.name;
+      state = free;
+      state.spec = spec;
+      state.name = name;
+      r.states.push_back(std::move(state));
+      continue;
+    }
+    FrictionLaw law;
+    law.friction = study.friction;
+    double rk = re / (1.0 + spec.slip);
+    switch (spec.kind) {
+      case RollingStateSpec::Kind::given_radius: rk = spec.rolling_radius; break;
+      case RollingStateSpec::Kind::full_stick: law.mode = FrictionLaw::Mode::full_stick; break;
+      case RollingStateSpec::Kind::full_slip:
+        // Spinning: the tread drags the tyre forward, against the support's motion (σ = −1); locked: σ = +1.
+        law.mode = FrictionLaw::Mode::full_slip;
+        law.slip_sign = spec.braking ? 1.0 : -1.0;
+        rk = re;
+        break;
+      default: break;
+    }
+    const RollingModel::Solved s = model.solve(law, rk);
+    model.fill(state, s);
+    if (spec.kind == RollingStateSpec::Kind::full_slip) {
+      if (spec.braking) state.slip = -1.0;
+    } else {
+      state.rolling_radius_mm = rk;
+      state.slip = re / rk - 1.0;
+    }
+    if (progress) {
+      if (s.converged)
+        progress(fmt::format("  {}: Qy {:+.1f} N, Qz {:.1f} N, Mx {:+.0f} N·mm, stick {:.0f}% ({} Newton "
+                             "iterations, {} factorisations, {:.2f} s)",
+                             state.name, s.figures.Qy_N, s.figures.Qz_N, s.figures.Mx_Nmm,
+                             100 * s.figures.stick_area_fraction, s.counts.newton_iterations,
+                             s.counts.factorizations, s.counts.time_s));
+      else
+        progress(fmt::format("  {}: did not converge: {}", state.name, s.failure));
+    }
+    if (!s.converged) {
+      ok = false;
+      if (r.failure.empty()) r.failure = fmt::format("state '{}': {}", state.name, s.failure);
+    }
+    r.states.push_back(std::move(state));
+  }
+  if (study.sweep) {
+    // From free rolling outwards on each side, each point continuing from its neighbour.
+    const SlipSweep& sw = *study.sweep;
+    std::vector<double> slips;
+    for (int i = 0; i < sw.points; ++i) slips.push_back(sw.from + (sw.to - sw.from) * i / (sw.points - 1));
+    std::vector<double> up, down;
+    for (double k : slips) (k >= 0 ? up : down).push_back(k);
+    std::reverse(down.begin(), down.end());
+    FrictionLaw law;
+    law.friction = study.friction;
+    for (const auto* side : {&up, &down}) {
+      for (double k : *side) {
+        const double rk = re / (1.0 + k);
+        const RollingModel::Solved s = model.solve(law, rk);
+        if (!s.converged) {
+          ok = false;
+          if (r.failure.empty()) r.failure = fmt::format("slip sweep at κ = {:g}: {}", k, s.failure);
+          if (progress) progress(fmt::format("  sweep κ {:+.4f}: did not converge: {}", k, s.failure));
+          break;  // the rest of this side would start from further away
+        }
+        r.sweep.push_back({k, rk, s.figures, s.counts});
+        if (progress)
+          progress(fmt::format("  sweep κ {:+.4f}: Qy {:+8.1f} N, Qz {:.1f} N, stick {:3.0f}% ({} Newton "
+                               "iterations, {:.2f} s)", k, s.figures.Qy_N, s.figures.Qz_N,
+                               100 * s.figures.stick_area_fraction, s.counts.newton_iterations, s.counts.time_s));
+      }
+    }
+    std::sort(r.sweep.begin(), r.sweep.end(), [](const SweepPoint& a, const SweepPoint& b) { return a.slip < b.slip; });
+  }
+  r.completed = ok;
+  model.finish(r.counters);
+  r.counters.wall_s = seconds_since(t_rolling);
+  (void)t0;
+  return r;
+}
+
+}  // namespace tirefem

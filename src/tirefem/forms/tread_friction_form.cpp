@@ -1,0 +1,262 @@
+#include "tirefem/forms/tread_friction_form.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+namespace tirefem {
+
+namespace {
+void append_outer_dofs(const std::array<int, 4>& pairs, std::vector<int>& dofs) {
+  for (int a = 0; a < 4; ++a)
+    for (int c = 0; c < 3; ++c) dofs.push_back(outer_dof(pairs[a], c));
+}
+}  // namespace
+
+// Position, travel coordinate and penetration of a tread point, the travel coordinate counted along the
+// support's motion (ξ_d = direction · ξ).
+struct TreadFrictionForm::PointKinematics {
+  Eigen::Vector3d position;
+  TravelCoordinate travel;
+  Penetration penetration;
+};
+
+TreadFrictionForm::TreadFrictionForm(const ShellMesh& mesh, std::vector<TreadPoint> points,
+                                     double tread_stiffness, double shear_modulus, const SupportSurface& support,
+                                     int support_direction, std::vector<char> window)
+    : mesh_(mesh), points_(std::move(points)), kp_(tread_stiffness), shear_modulus_(shear_modulus),
+      support_(support), direction_(support_direction >= 0 ? 1.0 : -1.0), window_(std::move(window)) {
+  if (!(kp_ > 0) || !(shear_modulus_ > 0))
+    throw std::invalid_argument("tread friction: the tread stiffness and shear modulus must be > 0");
+  if (window_.size() != points_.size()) throw std::invalid_argument("tread friction: window of the wrong size");
+  std::map<double, std::vector<int>> by_u;  // lines: points of equal s
+  for (int q = 0; q < static_cast<int>(points_.size()); ++q) by_u[points_[q].u].push_back(q);
+  for (auto& [u, line] : by_u) {
+    std::sort(line.begin(), line.end(), [this](int a, int b) { return flow_angle(a) < flow_angle(b); });
+    lines_.push_back(std::move(line));
+  }
+}
+
+void TreadFrictionForm::add_pattern(PatternBuilder& pattern) const {
+  // A stick point's shear depends on its anchor anywhere upstream on its line: couple all elements of a
+  // line inside the window (lines of one strip of elements give the same block).
+  std::vector<std::vector<int>> seen;
+  for (const auto& line : lines_) {
+    std::vector<int> elements;
+    for (int q : line)
+      if (window_[q]) elements.push_back(points_[q].element);
+    std::sort(elements.begin(), elements.end());
+    elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
+    if (elements.empty() || std::find(seen.begin(), seen.end(), elements) != seen.end()) continue;
+    std::vector<int> dofs;
+    for (int e : elements) append_outer_dofs(mesh_.elements[e], dofs);
+    std::sort(dofs.begin(), dofs.end());
+    dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+    pattern.add_block(dofs);
+    seen.push_back(std::move(elements));
+  }
+}
+
+TreadFrictionForm::PointKinematics TreadFrictionForm::kinematics(int q, const Eigen::VectorXd& u) const {
+  const TreadPoint& p = points_[q];
+  PointKinematics k;
+  k.position = p.reference;
+  for (int a = 0; a < 4; ++a) k.position += p.shape[a] * u.segment<3>(outer_dof(p.pairs[a], 0));
+  k.travel = support_.travel(k.position, deflection_);
+  k.travel.value *= direction_;
+  k.travel.gradient *= direction_;
+  k.travel.hessian *= direction_;
+  k.penetration = support_.penetration(k.position, deflection_);
+  return k;
+}
+
+double TreadFrictionForm::slip_shear(int q, double penetration, double sign) const {
+  // The largest shear friction allows: G |s| / hp = μ kp g (eq. 15).
+  return sign * law_.friction * kp_ * penetration * points_[q].height / shear_modulus_;
+}
+
+FrictionPlan TreadFrictionForm::plan(const Eigen::VectorXd& u, const std::vector<char>& region) const {
+  FrictionPlan plan(points_.size());
+  for (const auto& line : lines_) {
+    int previous_out = -1;
+    bool anchored = false;
+    double anchor_shear = 0.0, anchor_angle = 0.0, anchor_travel = 0.0;
+    FrictionPlanPoint anchor;
+    double previous_g = 0.0, previous_angle = 0.0, previous_travel = 0.0;
+    for (int q : line) {
+      const PointKinematics k = kinematics(q, u);
+      const double g = k.penetration.value;
+      const bool touching = region.empty() ? g > 0 : region[q] != 0;
+      if (!touching || !window_[q]) {
+        anchored = false;
+        previous_out = q, previous_g = g, previous_angle = flow_angle(q), previous_travel = k.travel.value;
+        continue;
+      }
+      FrictionPlanPoint& pp = plan[q];
+      if (!anchored) {
+        // Entry of the patch: where g crosses zero between the last point out and this one.
+        anchor = FrictionPlanPoint{};
+        anchor.anchor_a = previous_out >= 0 ? previous_out : q;
+        anchor.anchor_b = q;
+        const double w = previous_out >= 0 && g != previous_g ? -previous_g / (g - previous_g) : 1.0;
+        anchor.anchor_weight = std::clamp(w, 0.0, 1.0);
+        const double wa = 1.0 - anchor.anchor_weight, wb = anchor.anchor_weight;
+        anchor_shear = 0.0;
+        anchor_angle = previous_out >= 0 ? wa * previous_angle + wb * flow_angle(q) : flow_angle(q);
+        anchor_travel = previous_out >= 0 ? wa * previous_travel + wb * k.travel.value : k.travel.value;
+        anchored = true;
+      }
+      if (law_.mode == FrictionLaw::Mode::full_slip) {
+        pp.status = TreadContact::slip;
+        pp.sign = law_.slip_sign;
+        continue;
+      }
+      // Would-be stick shear (eq. 16 from the anchor) and the Coulomb test (eq. 15).
+      const double trial =
+          anchor_shear + rolling_radius_ * (flow_angle(q) - anchor_angle) - (k.travel.value - anchor_travel);
+      const bool sticks = law_.mode == FrictionLaw::Mode::full_stick ||
+                          shear_modulus_ * std::abs(trial) / points_[q].height <= law_.friction * kp_ * g;
+      if (sticks) {
+        pp = anchor;
+        pp.status = TreadContact::stick;
+        continue;
+      }
+      pp.status = TreadContact::slip;
+      pp.sign = trial >= 0 ? 1.0 : -1.0;
+      // Re-sticking further on starts from this point's friction-limited shear.
+      anchor = FrictionPlanPoint{};
+      anchor.anchor_a = anchor.anchor_b = q;
+      anchor.anchored_on_slip = true;
+      anchor.sign = pp.sign;
+      anchor_shear = slip_shear(q, g, pp.sign);
+      anchor_angle = flow_angle(q);
+      anchor_travel = k.travel.value;
+    }
+  }
+  return plan;
+}
+
+void TreadFrictionForm::freeze_plan(FrictionPlan plan) {
+  if (plan.size() != points_.size()) throw std::invalid_argument("friction plan of the wrong size");
+  frozen_ = std::move(plan);
+}
+
+int TreadFrictionForm::contact_outside_window(const Eigen::VectorXd& u) const {
+  int n = 0;
+  for (int q = 0; q < static_cast<int>(points_.size()); ++q)
+    if (!window_[q] && kinematics(q, u).penetration.value > 0) ++n;
+  return n;
+}
+
+void TreadFrictionForm::assemble(const FormInput& input, SparseSystem& system) const {
+  const FrictionPlan fresh = frozen_.empty() ? plan(input.displacement) : FrictionPlan{};
+  const FrictionPlan& plan = frozen_.empty() ? fresh : frozen_;
+  const int n = static_cast<int>(points_.size());
+#pragma omp parallel for schedule(dynamic, 64)
+  for (int q = 0; q < n; ++q) {
+    const FrictionPlanPoint& pp = plan[q];
+    if (pp.status == TreadContact::out) continue;
+    const TreadPoint& p = points_[q];
+    const PointKinematics k = kinematics(q, input.displacement);
+    const double norm = k.travel.gradient.norm();
+    const Eigen::Vector3d t = k.travel.gradient / norm;  // unit, along the support's motion
+    // ∂t/∂x = (I − t tᵀ) ∂²ξ / |∇ξ|
+    const Eigen::Matrix3d dt = (Eigen::Matrix3d::Identity() - t * t.transpose()) * k.travel.hessian / norm;
+    double magnitude = 0.0;  // traction × area: the force on the tyre is magnitude · t
+    // ∂(magnitude)/∂x at up to three points: this one, and the anchor's a and b.
+    int other[2] = {-1, -1};
+    Eigen::Vector3d d_self = Eigen::Vector3d::Zero(), d_other[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+    if (pp.status == TreadContact::slip) {
+      // eq. (17) {Fsl}, [Ksl]: σ μ kp g, depending on the normal displacement only.
+      const double c = pp.sign * law_.friction * kp_ * p.weight;
+      magnitude = c * k.penetration.value;
+      d_self = c * k.penetration.gradient;
+    } else {
+      // eq. (17) {Fst}, [Kst]: (G/hp) s, with s from the anchor (eq. 16).
+      const double c = shear_modulus_ / p.height * p.weight;
+      const double wb = pp.anchor_weight, wa = 1.0 - wb;
+      const PointKinematics ka = kinematics(pp.anchor_a, input.displacement);
+      const PointKinematics kb = pp.anchor_b == pp.anchor_a ? ka : kinematics(pp.anchor_b, input.displacement);
+      double anchor_shear = 0.0;
+      Eigen::Vector3d d_anchor_shear = Eigen::Vector3d::Zero();
+      if (pp.anchored_on_slip) {
+        anchor_shear = slip_shear(pp.anchor_a, ka.penetration.value, pp.sign);
+        d_anchor_shear = slip_shear(pp.anchor_a, 1.0, pp.sign) * ka.penetration.gradient;
+      }
+      const double anchor_angle = wa * flow_angle(pp.anchor_a) + wb * flow_angle(pp.anchor_b);
+      const double anchor_travel = wa * ka.travel.value + wb * kb.travel.value;
+      const double shear =
+          anchor_shear + rolling_radius_ * (flow_angle(q) - anchor_angle) - (k.travel.value - anchor_travel);
+      magnitude = c * shear;
+      d_self = -c * k.travel.gradient;
+      other[0] = pp.anchor_a;
+      d_other[0] = c * (wa * ka.travel.gradient + d_anchor_shear);
+      if (pp.anchor_b != pp.anchor_a) {
+        other[1] = pp.anchor_b;
+        d_other[1] = c * wb * kb.travel.gradient;
+      } else {
+        d_other[0] += c * wb * ka.travel.gradient;
+      }
+    }
+    // Residual = −force on the tyre, spread over this point's element; tangent rows on this element,
+    // columns on the elements of this point and of its anchor.
+    std::vector<int> dofs;
+    dofs.reserve(36);
+    append_outer_dofs(p.pairs, dofs);
+    for (int o : other)
+      if (o >= 0) append_outer_dofs(points_[o].pairs, dofs);
+    const int m = static_cast<int>(dofs.size());
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(m);
+    Eigen::MatrixXd tangent;
+    for (int a = 0; a < 4; ++a) f.segment<3>(3 * a) = -p.shape[a] * magnitude * t;
+    if (input.with_tangent) {
+      tangent = Eigen::MatrixXd::Zero(m, m);
+      const Eigen::Matrix3d self = -(t * d_self.transpose() + magnitude * dt);
+      for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b) tangent.block<3, 3>(3 * a, 3 * b) += p.shape[a] * p.shape[b] * self;
+      int column = 12;
+      for (int j = 0; j < 2; ++j) {
+        if (other[j] < 0) continue;
+        const Eigen::Matrix3d cross = -t * d_other[j].transpose();
+        const TreadPoint& po = points_[other[j]];
+        for (int a = 0; a < 4; ++a)
+          for (int b = 0; b < 4; ++b)
+            tangent.block<3, 3>(3 * a, column + 3 * b) += p.shape[a] * po.shape[b] * cross;
+        column += 12;
+      }
+    }
+    const double* block = input.with_tangent ? tangent.data() : nullptr;
+    const double* forces = f.data();
+    system.add(std::span<const int>(dofs), forces, block, input.with_tangent);
+  }
+}
+
+std::vector<TreadTraction> TreadFrictionForm::evaluate(const Eigen::VectorXd& u) const {
+  const FrictionPlan plan = frozen_.empty() ? this->plan(u) : frozen_;
+  std::vector<TreadTraction> out(points_.size());
+  for (int q = 0; q < static_cast<int>(points_.size()); ++q) {
+    const FrictionPlanPoint& pp = plan[q];
+    TreadTraction& tr = out[q];
+    tr.status = pp.status;
+    if (pp.status == TreadContact::out) continue;
+    const TreadPoint& p = points_[q];
+    const PointKinematics k = kinematics(q, u);
+    if (pp.status == TreadContact::slip) {
+      tr.shear = slip_shear(q, k.penetration.value, pp.sign);
+    } else {
+      const double wb = pp.anchor_weight, wa = 1.0 - wb;
+      const PointKinematics ka = kinematics(pp.anchor_a, u);
+      const PointKinematics kb = kinematics(pp.anchor_b, u);
+      const double anchor_shear = pp.anchored_on_slip ? slip_shear(pp.anchor_a, ka.penetration.value, pp.sign) : 0.0;
+      tr.shear = anchor_shear +
+                 rolling_radius_ * (flow_angle(q) - wa * flow_angle(pp.anchor_a) - wb * flow_angle(pp.anchor_b)) -
+                 (k.travel.value - wa * ka.travel.value - wb * kb.travel.value);
+    }
+    tr.traction = shear_modulus_ * tr.shear / p.height;
+    tr.force = tr.traction * p.weight * k.travel.gradient.normalized();
+  }
+  return out;
+}
+
+}  // namespace tirefem
