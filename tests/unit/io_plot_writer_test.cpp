@@ -80,9 +80,7 @@ TEST(IoPlotWriter, ReversedAxisAndDottedStem) {
   EXPECT_NE(read_file(scratch.path / "slip_0.5deg.gp").find("reverse"), std::string::npos);
 }
 
-TEST(IoPlotWriter, HeatMap) {
-  if (!gnuplot_on_path()) GTEST_SKIP() << "gnuplot is not on PATH";
-  ScratchDir scratch;
+HeatMap pressure_map() {
   HeatMap map{"Contact pressure", "x [mm]", "y [mm]", "p [MPa]", {}, {}, {}, true};
   for (int i = 0; i < 21; ++i) map.x.push_back(-60.0 + 6.0 * i);
   for (int j = 0; j < 11; ++j) map.y.push_back(-50.0 + 10.0 * j);
@@ -91,10 +89,56 @@ TEST(IoPlotWriter, HeatMap) {
     for (double x : map.x)
       map.values.back().push_back(std::max(0.0, 0.3 * (1.0 - (x * x) / 3600 - (y * y) / 2500)));
   }
+  return map;
+}
+
+TEST(IoPlotWriter, HeatMap) {
+  if (!gnuplot_on_path()) GTEST_SKIP() << "gnuplot is not on PATH";
+  ScratchDir scratch;
+  const HeatMap map = pressure_map();
   const fs::path stem = scratch.path / "footprint_pressure";
   EXPECT_TRUE(write_heatmap(stem, map));
   expect_rendered(stem);
   EXPECT_NE(read_file(fs::path(stem) += ".gp").find("pm3d"), std::string::npos);
+}
+
+TEST(IoPlotWriter, HeatMapOverlays) {
+  if (!gnuplot_on_path()) GTEST_SKIP() << "gnuplot is not on PATH";
+  ScratchDir scratch;
+  HeatMap map = pressure_map();
+  map.values[2][3] = -0.1;  // the overlays are drawn at the lowest value
+  PlotSeries slip{"slip", {}, {}, "points pt 7 ps 0.4 lc rgb '#000000'"};
+  for (int i = 0; i < 8; ++i) slip.x.push_back(-20.0 + 5.0 * i), slip.y.push_back(30.0);
+  slip.y[2] = std::nan("");
+  map.overlays = {PlotSeries{"empty", {}, {}, "points"}, slip};
+  const fs::path stem = scratch.path / "traction";
+  EXPECT_TRUE(write_heatmap(stem, map));
+  expect_rendered(stem);
+  const std::string gp = read_file(fs::path(stem) += ".gp");
+  EXPECT_NE(gp.find("splot data index 0 using 1:2:3 with pm3d notitle, \\\n      data index 1 using "
+                    "1:2:(-0.1) with points pt 7 ps 0.4 lc rgb '#000000' title 'slip'"),
+            std::string::npos)
+      << gp;
+  EXPECT_NE(gp.find("set key below"), std::string::npos) << gp;
+  const std::string dat = read_file(fs::path(stem) += ".dat");
+  EXPECT_NE(dat.find("\n\n\n# overlay: slip\n# x y\n-20 30\n-15 30\n-10 NaN\n"), std::string::npos) << dat;
+  EXPECT_EQ(dat.find("empty"), std::string::npos) << dat;
+
+  // Only empty overlays: the script and data of the plain map.
+  HeatMap plain = pressure_map(), empty = pressure_map();
+  empty.overlays = {PlotSeries{"empty", {}, {}, "points"}};
+  EXPECT_TRUE(write_heatmap(scratch.path / "plain", plain));
+  EXPECT_TRUE(write_heatmap(scratch.path / "plain_too", empty));
+  const auto strip_names = [](std::string text, const std::string& name) {
+    for (std::size_t at = text.find(name); at != std::string::npos; at = text.find(name, at))
+      text.replace(at, name.size(), "STEM");
+    return text;
+  };
+  EXPECT_EQ(strip_names(read_file(scratch.path / "plain.gp"), "plain"),
+            strip_names(read_file(scratch.path / "plain_too.gp"), "plain_too"));
+  EXPECT_EQ(read_file(scratch.path / "plain.dat"), read_file(scratch.path / "plain_too.dat"));
+  EXPECT_NE(read_file(scratch.path / "plain.gp").find("unset key\n"), std::string::npos);
+  EXPECT_EQ(read_file(scratch.path / "plain.gp").find("set key below"), std::string::npos);
 }
 
 TEST(IoPlotWriter, RejectsInconsistentInput) {
@@ -112,6 +156,11 @@ TEST(IoPlotWriter, RejectsInconsistentInput) {
   EXPECT_THROW(write_heatmap(scratch.path / "m", map), std::invalid_argument);
   map.values[1].push_back(6);
   map.y = {0};
+  EXPECT_THROW(write_heatmap(scratch.path / "m", map), std::invalid_argument);
+  map = pressure_map();
+  map.overlays = {PlotSeries{"slip", {1.0, 2.0}, {1.0}, "points"}};
+  EXPECT_THROW(write_heatmap(scratch.path / "m", map), std::invalid_argument);
+  map.overlays = {PlotSeries{"slip", {1.0}, {1.0}, "points; !rm"}};
   EXPECT_THROW(write_heatmap(scratch.path / "m", map), std::invalid_argument);
   EXPECT_FALSE(fs::exists(scratch.path / "p.gp"));
   EXPECT_FALSE(fs::exists(scratch.path / "m.gp"));

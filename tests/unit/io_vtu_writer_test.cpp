@@ -164,6 +164,39 @@ TEST(IoVtuWriter, EscapesFieldNames) {
   EXPECT_TRUE(tags_balanced(text));
 }
 
+TEST(IoVtuWriter, VertexCellsFollowTheQuads) {
+  ScratchDir scratch;
+  VtuMesh cloud;  // a point cloud: 3 vertex cells, no quads
+  for (int i = 0; i < 3; ++i) cloud.points.emplace_back(i, 0.0, 0.0);
+  cloud.vertices = {0, 1, 2};
+  cloud.point_scalars = {{"status", {0.0, 1.0, 2.0}}};
+  write_vtu(scratch.path / "cloud.vtu", cloud);
+  std::string text = read_file(scratch.path / "cloud.vtu");
+  EXPECT_TRUE(tags_balanced(text)) << text;
+  EXPECT_NE(text.find("<Piece NumberOfPoints=\"3\" NumberOfCells=\"3\">"), std::string::npos) << text;
+  EXPECT_EQ(element_tokens(text, "Name=\"connectivity\""), (std::vector<std::string>{"0", "1", "2"}));
+  EXPECT_EQ(element_tokens(text, "Name=\"offsets\""), (std::vector<std::string>{"1", "2", "3"}));
+  EXPECT_EQ(element_tokens(text, "Name=\"types\""), (std::vector<std::string>{"1", "1", "1"}));
+
+  VtuMesh mixed = two_quads();  // cell fields: one value per quad, then per vertex
+  mixed.vertices = {5};
+  mixed.cell_scalars = {{"zone", {1.0, 2.0, 3.0}}};
+  mixed.cell_vectors.clear();
+  write_vtu(scratch.path / "mixed.vtu", mixed);
+  text = read_file(scratch.path / "mixed.vtu");
+  EXPECT_TRUE(tags_balanced(text)) << text;
+  EXPECT_NE(text.find("NumberOfCells=\"3\""), std::string::npos) << text;
+  EXPECT_EQ(element_tokens(text, "Name=\"connectivity\""),
+            (std::vector<std::string>{"0", "1", "4", "3", "1", "2", "5", "4", "5"}));
+  EXPECT_EQ(element_tokens(text, "Name=\"offsets\""), (std::vector<std::string>{"4", "8", "9"}));
+  EXPECT_EQ(element_tokens(text, "Name=\"types\""), (std::vector<std::string>{"9", "9", "1"}));
+
+  mixed.cell_scalars[0].second.pop_back();
+  expect_invalid(mixed, "cell field 'zone' has 2 values, expected 3");
+  cloud.vertices[1] = 3;
+  expect_invalid(cloud, "vertex 1 refers to point 3");
+}
+
 TEST(IoVtuWriter, PvdListsTheSeries) {
   ScratchDir scratch;
   const fs::path pvd = scratch.path / "inflation.pvd";

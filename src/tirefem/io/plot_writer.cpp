@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string_view>
@@ -227,6 +228,12 @@ bool write_heatmap(const fs::path& stem, const HeatMap& map) {
       throw std::invalid_argument(
           fmt::format("heat map '{}': row {} has {} values, expected one per x value ({})", map.title, iy,
                       map.values[iy].size(), map.x.size()));
+  for (const PlotSeries& s : map.overlays) {
+    if (s.x.size() != s.y.size())
+      throw std::invalid_argument(fmt::format("heat map '{}', overlay '{}': {} x values but {} y values",
+                                              map.title, s.title, s.x.size(), s.y.size()));
+    check_style(map.title, s.title, s.style);
+  }
 
   Buffer data;
   auto d = std::back_inserter(data);
@@ -236,6 +243,23 @@ bool write_heatmap(const fs::path& stem, const HeatMap& map) {
       fmt::format_to(d, "{} {} {}\n", data_value(map.x[ix]), data_value(map.y[iy]),
                      data_value(map.values[iy][ix]));
     fmt::format_to(d, "\n");  // a blank line ends one scan line of the grid
+  }
+  // Overlays follow the grid as blocks of their own ("index k", two blank lines apart); the grid alone
+  // keeps the plain layout and command of a map without overlays.
+  std::string overlay_command;
+  double z_overlay = std::numeric_limits<double>::infinity();  // lowest value: inside the z range
+  for (const auto& row : map.values)
+    for (double v : row)
+      if (std::isfinite(v)) z_overlay = std::min(z_overlay, v);
+  if (!std::isfinite(z_overlay)) z_overlay = 0.0;
+  int block = 0;
+  for (const PlotSeries& s : map.overlays) {
+    if (s.x.empty()) continue;
+    fmt::format_to(d, "\n\n# overlay: {}\n# x y\n", s.title);
+    for (std::size_t i = 0; i < s.x.size(); ++i)
+      fmt::format_to(d, "{} {}\n", data_value(s.x[i]), data_value(s.y[i]));
+    overlay_command += fmt::format(", \\\n      data index {} using 1:2:({}) with {} title {}", ++block,
+                                   z_overlay, s.style, gnuplot_string(s.title));
   }
 
   Buffer gp;
@@ -248,7 +272,12 @@ bool write_heatmap(const fs::path& stem, const HeatMap& map) {
                  "# viridis\n"
                  "set palette defined (0 '#440154', 1 '#3b528b', 2 '#21918c', 3 '#5ec962', 4 '#fde725')\n");
   if (map.equal_axes) fmt::format_to(o, "set size ratio -1\n");
-  write_render_block(gp, stem, "splot data using 1:2:3 with pm3d");
+  if (overlay_command.empty()) {
+    write_render_block(gp, stem, "splot data using 1:2:3 with pm3d");
+  } else {
+    fmt::format_to(o, "set key below\n");
+    write_render_block(gp, stem, "splot data index 0 using 1:2:3 with pm3d notitle" + overlay_command);
+  }
   return write_and_render(stem, gp, data);
 }
 

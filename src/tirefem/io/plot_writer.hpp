@@ -28,11 +28,14 @@ struct Plot {
 
 // A colour map of values on a rectilinear grid (gnuplot pm3d seen from above). Each quadrilateral between
 // four neighbouring grid points is coloured by the mean of its corner values; non-finite values leave a hole.
+// Overlays are (x, y) series drawn on top of the map in their style (e.g. "points pt 7 ps 0.4 lc rgb
+// '#000000'", marking slip points) and named in a key below the map; empty overlays are left out.
 struct HeatMap {
   std::string title, x_label, y_label, value_label;
   std::vector<double> x, y;                 // grid lines, at least 2 each
   std::vector<std::vector<double>> values;  // values[iy][ix]
   bool equal_axes = false;                  // same scale on x and y (e.g. a footprint in mm × mm)
+  std::vector<PlotSeries> overlays;
 };
 
 // Write stem.gp and stem.dat, then run gnuplot on them. Returns true when stem.png and stem.svg were

@@ -14,6 +14,7 @@ namespace tirefem {
 namespace {
 
 constexpr int vtk_quad = 9;
+constexpr int vtk_vertex = 1;
 using Buffer = fmt::memory_buffer;
 
 std::string xml_escaped(std::string_view text) {
@@ -94,11 +95,16 @@ void check_mesh(const std::filesystem::path& file, const VtuMesh& mesh) {
     for (const int p : mesh.quads[q])
       if (p < 0 || p >= n_points)
         fail(file, fmt::format("quad {} refers to point {}, but there are {} points", q, p, n_points));
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+    if (mesh.vertices[v] < 0 || mesh.vertices[v] >= n_points)
+      fail(file, fmt::format("vertex {} refers to point {}, but there are {} points", v, mesh.vertices[v],
+                             n_points));
   std::set<std::string> point_names, cell_names;
   check_fields(file, "point", mesh.point_scalars, mesh.points.size(), point_names);
   check_fields(file, "point", mesh.point_vectors, mesh.points.size(), point_names);
-  check_fields(file, "cell", mesh.cell_scalars, mesh.quads.size(), cell_names);
-  check_fields(file, "cell", mesh.cell_vectors, mesh.quads.size(), cell_names);
+  const std::size_t cells = mesh.quads.size() + mesh.vertices.size();
+  check_fields(file, "cell", mesh.cell_scalars, cells, cell_names);
+  check_fields(file, "cell", mesh.cell_vectors, cells, cell_names);
 }
 
 // ---- output -----------------------------------------------------------------------------------------
@@ -140,19 +146,25 @@ void write_data_section(Buffer& out, std::string_view tag,
   fmt::format_to(std::back_inserter(out), "      </{}>\n", tag);
 }
 
-void write_cells(Buffer& out, const std::vector<std::array<int, 4>>& quads) {
+void write_cells(Buffer& out, const std::vector<std::array<int, 4>>& quads,
+                 const std::vector<int>& vertices) {
   auto o = std::back_inserter(out);
+  const std::size_t cells = quads.size() + vertices.size();
   fmt::format_to(
       o, "      <Cells>\n        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
   for (const auto& q : quads) fmt::format_to(o, "          {} {} {} {}\n", q[0], q[1], q[2], q[3]);
+  for (std::size_t v = 0; v < vertices.size(); ++v)
+    fmt::format_to(o, "{}{}{}", v % 12 == 0 ? "          " : " ", vertices[v],
+                   v % 12 == 11 || v + 1 == vertices.size() ? "\n" : "");
   fmt::format_to(
       o, "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">");
-  for (std::size_t c = 0; c < quads.size(); ++c)
-    fmt::format_to(o, "{}{}", c % 12 == 0 ? "\n          " : " ", 4 * (c + 1));
+  for (std::size_t c = 0; c < cells; ++c)
+    fmt::format_to(o, "{}{}", c % 12 == 0 ? "\n          " : " ",
+                   c < quads.size() ? 4 * (c + 1) : 4 * quads.size() + (c - quads.size() + 1));
   fmt::format_to(
       o, "\n        </DataArray>\n        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">");
-  for (std::size_t c = 0; c < quads.size(); ++c)
-    fmt::format_to(o, "{}{}", c % 24 == 0 ? "\n          " : " ", vtk_quad);
+  for (std::size_t c = 0; c < cells; ++c)
+    fmt::format_to(o, "{}{}", c % 24 == 0 ? "\n          " : " ", c < quads.size() ? vtk_quad : vtk_vertex);
   fmt::format_to(o, "\n        </DataArray>\n      </Cells>\n");
 }
 
@@ -168,13 +180,13 @@ void write_vtu(const std::filesystem::path& file, const VtuMesh& mesh) {
                  "header_type=\"UInt64\">\n"
                  "  <UnstructuredGrid>\n"
                  "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n",
-                 mesh.points.size(), mesh.quads.size());
+                 mesh.points.size(), mesh.quads.size() + mesh.vertices.size());
   write_data_section(out, "PointData", mesh.point_scalars, mesh.point_vectors);
   write_data_section(out, "CellData", mesh.cell_scalars, mesh.cell_vectors);
   fmt::format_to(o, "      <Points>\n");
   write_array(out, "Points", mesh.points);
   fmt::format_to(o, "      </Points>\n");
-  write_cells(out, mesh.quads);
+  write_cells(out, mesh.quads, mesh.vertices);
   fmt::format_to(o, "    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n");
   write_text_file(file, "VTU", out);
 }

@@ -1,6 +1,7 @@
 #pragma once
-// ParaView files for a quadrilateral surface mesh: one XML UnstructuredGrid (.vtu, ASCII data) per state,
-// and a .pvd collection that lists a series of them (load steps, rolling positions) against a time value.
+// ParaView files for a quadrilateral surface mesh or a point cloud: one XML UnstructuredGrid (.vtu, ASCII
+// data) per state, and a .pvd collection that lists a series of them (load steps, rolling positions)
+// against a time value.
 #include <array>
 #include <filesystem>
 #include <string>
@@ -14,12 +15,14 @@ namespace tirefem {
 struct VtuMesh {
   std::vector<Eigen::Vector3d> points;
   std::vector<std::array<int, 4>> quads;  // point indices, counter-clockwise seen from the outward side
-  // Named fields (name with units, e.g. "p_MPa"); one value per point or per quad.
+  std::vector<int> vertices;              // single-point cells (a point cloud), after the quads
+  // Named fields (name with units, e.g. "p_MPa"); one value per point or per cell (quads, then vertices).
   std::vector<std::pair<std::string, std::vector<double>>> point_scalars, cell_scalars;
   std::vector<std::pair<std::string, std::vector<Eigen::Vector3d>>> point_vectors, cell_vectors;
 };
 
-// Writes `mesh` as VTK_QUAD cells. Before writing anything, checks that every quad index is a valid point,
+// Writes `mesh` as VTK_QUAD cells followed by VTK_VERTEX cells. Before writing anything, checks that every
+// quad and vertex index is a valid point,
 // every field has one entry per point or cell, field names are non-empty and unique within point and
 // within cell data, and all numbers are finite (VTK's ASCII reader rejects "nan"); throws
 // std::invalid_argument naming the file and the field. Throws std::runtime_error naming the file when it
