@@ -174,7 +174,7 @@ TEST(CaseReaderRolling, UnknownKeysSayDidYouMean) {
   std::string text = rolling_with("frictoin = 0.5");
   EXPECT_EQ(error_of(text), where(text, "frictoin") +
                                 "rolling[0].frictoin: unknown key; expected one of: name, support, "
-                                "target_load, load_tolerance, friction, reverse, states, sweep (did you mean "
+                                "target_load, load_tolerance, friction, reverse, states, sweep, mesh (did you mean "
                                 "'friction'?)");
   EXPECT_CONTAINS(error_of(rolling_with("theory = \"linear\"")), "rolling[0].theory: unknown key");
   text = rolling_with("sweep = { from = 0.0, point = 3 }");
@@ -456,5 +456,22 @@ TEST(CaseReaderRolling, ValidateCaseRunsTheSameChecks) {
   EXPECT_CONTAINS(error(c), file + "rolling[0].support.terms[1].y_power: must be 0 where the coefficient");
 }
 
+}  // namespace
+}  // namespace tirefem
+
+namespace tirefem {
+namespace {
+TEST(CaseReaderRollingMesh, OwnMeshInheritsTheCaseMesh) {
+  const Case c = parse_case(rolling_with("mesh = { circumferential_elements = 80 }"), "case.toml");
+  ASSERT_TRUE(c.rolling[0].mesh.has_value());
+  EXPECT_EQ(c.rolling[0].mesh->circumferential_elements, 80);
+  EXPECT_EQ(c.rolling[0].mesh->meridional_elements, c.mesh.meridional_elements);
+  EXPECT_EQ(c.rolling[0].mesh->circumferential_refinement, c.mesh.circumferential_refinement);
+  EXPECT_FALSE(parse_case(rolling_with(""), "case.toml").rolling[0].mesh.has_value());
+  EXPECT_CONTAINS(error_of(rolling_with("mesh = { circumferential_elements = 2 }")),
+                  "rolling[0].mesh.circumferential_elements: must be ≥ 3 (got 2)");
+  EXPECT_CONTAINS(error_of(rolling_with("mesh = { circumferential_element = 2 }")),
+                  "rolling[0].mesh.circumferential_element: unknown key");
+}
 }  // namespace
 }  // namespace tirefem

@@ -6,57 +6,27 @@
 // or wrong term (e.g. the drum's curvature term kp g ∂²g, which is ≥ 1e-3 of the tangent here, checked
 // below) shows up a thousand times above it.
 //
-// Mesh: a tyre-like cylindrical patch (carcass at r = 280, breaker at 283, tread 7 mm, axis 290 mm above
-// the road, so the undeformed tread touches z = 0 at φ = 0), 6 × 10 elements, 3 × 3 tread points each,
-// under a random displacement of ±1.5 mm on every DOF. In the single-loop (released) case the region
-// {g > 0} changes with the displacement, so the random state is redrawn until no tread point lies within
-// 1e-3 mm of g = 0 (a step of h cannot cross the kink); in the frozen case every frozen point carries
-// kp g whatever its sign, and the frozen region includes points with g < 0 and leaves out some with g > 0.
+// Mesh: the tyre-like cylindrical patch of form_fd_support.hpp (tread touching z = 0 at φ = 0), 6 × 10
+// elements, 3 × 3 tread points each, under a random displacement of ±1.5 mm on every DOF. In the
+// single-loop (released) case the region {g > 0} changes with the displacement, so the random state is
+// redrawn until no tread point lies within 1e-3 mm of g = 0 (a step of h cannot cross the kink); in the
+// frozen case every frozen point carries kp g whatever its sign, and the frozen region includes points
+// with g < 0 and leaves out some with g > 0.
 #include <cstdio>
 #include <random>
 
-#include <omp.h>
-
 #include <gtest/gtest.h>
 
-#include "contact_support.hpp"
+#include "form_fd_support.hpp"
 #include "tirefem/forms/winkler_contact_form.hpp"
 #include "tirefem/road/support_surface.hpp"
 
 namespace tirefem::verification {
 namespace {
 
-constexpr double kStep = 1e-5;        // finite-difference step, mm
-constexpr double kTolerance = 1e-6;   // relative error of the tangent / derivatives
-constexpr double kMargin = 1e-3;      // no tread point this close to g = 0 in the released case
-constexpr double kAxisZ = 290.0, kCarcassR = 280.0, kBreakerR = 283.0, kTreadHeight = 7.0;
-
-ShellMesh tyre_patch_mesh() {
-  return build_grid_mesh(uniform_values(-40.0, 40.0, 6), uniform_values(-0.35, 0.35, 10), false,
-                         [](double x, double phi) {
-                           const Eigen::Vector3d dir(0.0, std::sin(phi), -std::cos(phi));
-                           const Eigen::Vector3d axis(x, 0.0, kAxisZ);
-                           return NodePairPosition{axis + kCarcassR * dir, axis + kBreakerR * dir};
-                         });
-}
-
-std::vector<TreadPoint> patch_points(const ShellMesh& mesh) {
-  return make_tread_points(mesh, all_elements(mesh), 3, [](double) { return kTreadHeight; });
-}
-
-// The finite differences need ~1000 assemblies of a small form each; OpenMP threads spinning at the
-// barriers of so many tiny parallel loops cost seconds on a loaded machine (12 s instead of 0.06 s per
-// support was observed with the load average at twice the core count). One thread for these loops.
-class SingleThread {
- public:
-  SingleThread() : threads_(omp_get_max_threads()) { omp_set_num_threads(1); }
-  ~SingleThread() { omp_set_num_threads(threads_); }
-  SingleThread(const SingleThread&) = delete;
-  SingleThread& operator=(const SingleThread&) = delete;
-
- private:
-  int threads_;
-};
+constexpr double kStep = kFdStep;           // finite-difference step, mm
+constexpr double kTolerance = kFdTolerance; // relative error of the tangent / derivatives
+constexpr double kMargin = 1e-3;            // no tread point this close to g = 0 in the released case
 
 // The same support without its curvature term: shows how much the hessian contributes to the tangent.
 class WithoutCurvature final : public SupportSurface {
@@ -74,44 +44,12 @@ class WithoutCurvature final : public SupportSurface {
 };
 
 // The contact form alone, assembled over all DOFs (nothing fixed).
-struct ContactOnly {
-  ContactOnly(const ShellMesh& mesh, const SupportSurface& support, double deflection) {
-    auto form = std::make_unique<WinklerContactForm>(mesh, patch_points(mesh), 1.3, support);
-    form->set_deflection(deflection);
-    contact = form.get();
-    std::vector<std::unique_ptr<Form>> forms;
-    forms.push_back(std::move(form));
-    problem = std::make_unique<NonlinearProblem>(DofMap(mesh.dof_count()), std::move(forms));
-  }
-  Eigen::VectorXd residual(const Eigen::VectorXd& u) {
-    problem->evaluate(u, 1.0, false);
-    return problem->system().residual();
-  }
-  Eigen::MatrixXd tangent(const Eigen::VectorXd& u) {
-    problem->evaluate(u, 1.0, true);
-    return Eigen::MatrixXd(problem->system().tangent());
-  }
-  WinklerContactForm* contact = nullptr;
-  std::unique_ptr<NonlinearProblem> problem;
-};
+using ContactOnly = SingleFormProblem<WinklerContactForm>;
 
-Eigen::MatrixXd fd_tangent(ContactOnly& c, const Eigen::VectorXd& u) {
-  const int n = static_cast<int>(u.size());
-  Eigen::MatrixXd k(n, n);
-  Eigen::VectorXd v = u;
-  for (int j = 0; j < n; ++j) {
-    v[j] = u[j] + kStep;
-    const Eigen::VectorXd plus = c.residual(v);
-    v[j] = u[j] - kStep;
-    const Eigen::VectorXd minus = c.residual(v);
-    v[j] = u[j];
-    k.col(j) = (plus - minus) / (2.0 * kStep);
-  }
-  return k;
-}
-
-double max_relative_error(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
-  return (a - b).cwiseAbs().maxCoeff() / b.cwiseAbs().maxCoeff();
+ContactOnly contact_only(const ShellMesh& mesh, const SupportSurface& support, double deflection) {
+  auto form = std::make_unique<WinklerContactForm>(mesh, patch_points(mesh), 1.3, support);
+  form->set_deflection(deflection);
+  return ContactOnly(mesh, std::move(form));
 }
 
 struct PenetrationRange {
@@ -135,7 +73,7 @@ Eigen::VectorXd random_state(ContactOnly& c, int dofs, unsigned seed) {
   for (int attempt = 0; attempt < 200; ++attempt) {
     Eigen::VectorXd u(dofs);
     for (int i = 0; i < dofs; ++i) u[i] = uniform(rng);
-    const PenetrationRange r = penetrations(*c.contact, u);
+    const PenetrationRange r = penetrations(*c.form, u);
     if (r.closest_to_zero > kMargin && r.inside > 20 && r.outside > 20) return u;
   }
   throw std::runtime_error("no random state away from g = 0 found");
@@ -144,12 +82,12 @@ Eigen::VectorXd random_state(ContactOnly& c, int dofs, unsigned seed) {
 void check_support(const char* label, const SupportSurface& support, double deflection, bool curved) {
   const SingleThread single_thread;
   const ShellMesh mesh = tyre_patch_mesh();
-  ContactOnly c(mesh, support, deflection);
+  ContactOnly c = contact_only(mesh, support, deflection);
   const Eigen::VectorXd u = random_state(c, mesh.dof_count(), 4711);
-  const PenetrationRange range = penetrations(*c.contact, u);
+  const PenetrationRange range = penetrations(*c.form, u);
 
   // Single loop: Ωc = {g > 0} at the iterate.
-  c.contact->release_region();
+  c.form->release_region();
   const Eigen::MatrixXd k = c.tangent(u);
   const double released = max_relative_error(fd_tangent(c, u), k);
   EXPECT_LT(released, kTolerance) << label << ", released region: tangent vs central differences";
@@ -158,7 +96,7 @@ void check_support(const char* label, const SupportSurface& support, double defl
 
   // Frozen region: every point with g > −1.5 mm except every 7th, so it contains points with g < 0 (which
   // then pull: kp g < 0) and misses some with g > 0.
-  const std::vector<TreadPointState> states = c.contact->evaluate(u);
+  const std::vector<TreadPointState> states = c.form->evaluate(u);
   std::vector<char> region(states.size());
   int frozen_negative = 0, left_out_positive = 0;
   for (std::size_t q = 0; q < states.size(); ++q) {
@@ -168,15 +106,15 @@ void check_support(const char* label, const SupportSurface& support, double defl
   }
   ASSERT_GT(frozen_negative, 0);
   ASSERT_GT(left_out_positive, 0);
-  c.contact->freeze_region(region);
+  c.form->freeze_region(region);
   const Eigen::MatrixXd kf = c.tangent(u);
   const double frozen = max_relative_error(fd_tangent(c, u), kf);
   EXPECT_LT(frozen, kTolerance) << label << ", frozen region: tangent vs central differences";
 
   // How much the support's curvature term contributes (zero on the plane).
   WithoutCurvature flat(support);
-  ContactOnly c0(mesh, flat, deflection);
-  c0.contact->freeze_region(region);
+  ContactOnly c0 = contact_only(mesh, flat, deflection);
+  c0.form->freeze_region(region);
   const double curvature_share = max_relative_error(c0.tangent(u), kf);
   if (curved)
     EXPECT_GT(curvature_share, 1e3 * kTolerance)

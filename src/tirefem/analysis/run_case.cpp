@@ -1,6 +1,7 @@
 #include "tirefem/analysis/run_case.hpp"
 
 #include <chrono>
+#include <optional>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -9,10 +10,12 @@
 
 #include "tirefem/analysis/footprint.hpp"
 #include "tirefem/analysis/inflation.hpp"
+#include "tirefem/analysis/rolling.hpp"
 #include "tirefem/io/json_summary.hpp"
 #include "tirefem/io/results_folder.hpp"
 #include "tirefem/results/footprint_report.hpp"
 #include "tirefem/results/inflation_report.hpp"
+#include "tirefem/results/rolling_report.hpp"
 
 namespace tirefem {
 namespace {
@@ -74,6 +77,44 @@ void write_loaded_state(const ResultsFolder& folder, PlotWriter& plots, const Ty
   const CsvTable belt = circumferential_belt_table(tm, c.tyre, {{"inflated", &inflated}, {"loaded", &loaded}});
   write_csv(folder.path(n + "/belt_tension_equator.csv"), belt);
   plots.plot(n + "_belt_tension", circumferential_belt_plot(belt));
+}
+
+// A rolling study: the states and the sweep as tables, per state the tread points (CSV and point cloud),
+// the loaded shell and the traction map (Fig. 7), and the belt tension of all states together with the
+// inflated and the static one (Fig. 8).
+void write_rolling(const ResultsFolder& folder, PlotWriter& plots, const TyreMesh& tm, const Case& c,
+                   const RollingResult& r) {
+  const std::string& n = r.name;
+  write_csv(folder.path(n + "/states.csv"), rolling_states_table(r));
+  write_csv(folder.path(n + "/footprint_load_points.csv"), load_curve_table(r.footprint));
+  if (!r.sweep.empty()) {
+    write_csv(folder.path(n + "/slip_sweep.csv"), slip_sweep_table(r));
+    plots.plot(n + "_slip_curve", slip_sweep_plot(r));
+  }
+  if (!r.footprint.completed) return;
+  const auto inflated = evaluate_element_results(tm, c.tyre, r.footprint.inflation.displacement, Kinematics::nonlinear);
+  const auto loaded = evaluate_element_results(tm, c.tyre, r.footprint.final_state.displacement, Kinematics::nonlinear);
+  std::vector<std::vector<ElementResult>> rolling;
+  std::vector<std::string> labels;
+  for (const RollingStateResult& s : r.states) {
+    if (!s.converged) continue;
+    const std::string dir = n + "/" + s.name + "/";
+    write_csv(folder.path(dir + "tread_points.csv"), rolling_tread_table(r, s));
+    write_vtu(folder.path(dir + "tread_points.vtu"), tread_points_vtu(r, s));
+    StaticContactResult as_static = r.footprint;  // the loaded shell with this state's displacement
+    as_static.final_state.displacement = s.displacement;
+    as_static.final_state.tread = s.normal;
+    rolling.push_back(evaluate_element_results(tm, c.tyre, s.displacement, Kinematics::nonlinear));
+    labels.push_back(s.name);
+    write_vtu(folder.path(dir + "shell.vtu"), loaded_shell_vtu(tm, c.tyre, as_static, rolling.back()));
+    plots.heatmap(n + "_" + s.name + "_traction", traction_map_s_phi(r, s));
+  }
+  std::vector<std::pair<std::string, const std::vector<ElementResult>*>> belt{{"inflated", &inflated},
+                                                                              {"static", &loaded}};
+  for (std::size_t i = 0; i < rolling.size(); ++i) belt.emplace_back(labels[i], &rolling[i]);
+  const CsvTable table = circumferential_belt_table(tm, c.tyre, belt);
+  write_csv(folder.path(n + "/belt_tension_equator.csv"), table);
+  plots.plot(n + "_belt_tension", circumferential_belt_plot(table));
 }
 
 std::string incomplete_message(const StaticContactResult& r) {
@@ -181,6 +222,30 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     footprint_summaries.push_back(std::move(t));
   }
   if (!c.footprints.empty()) summary.insert("footprints", std::move(footprint_summaries));
+  toml::array rolling_summaries;
+  for (const RollingStudy& study : c.rolling) {
+    std::optional<TyreMesh> own_mesh;
+    if (study.mesh) {
+      own_mesh = build_tyre_mesh(c.tyre, *study.mesh);
+      report(options.progress, fmt::format("rolling '{}' on its own mesh: {} x {}, {} elements", study.name,
+                                           study.mesh->circumferential_elements, study.mesh->meridional_elements,
+                                           own_mesh->mesh.element_count()));
+    }
+    const TyreMesh& mesh = own_mesh ? *own_mesh : tm;
+    const RollingResult r = run_rolling(mesh, c.tyre, c.inflation, c.contact, study, options.progress);
+    if (!r.completed) {
+      const std::string m = fmt::format("rolling '{}': {}", r.name, r.failure);
+      report(options.progress, "warning: " + m + " (converged states kept)");
+      incomplete.push_back(m);
+    }
+    write_rolling(folder, plots, mesh, c, r);
+    toml::table t = rolling_summary(r);
+    t.insert("footprint_solver", counters_table(r.footprint.counters));
+    t.insert("solver", counters_table(r.counters));
+    add_krylov(*t["solver"].as_table(), r.counters);
+    rolling_summaries.push_back(std::move(t));
+  }
+  if (!c.rolling.empty()) summary.insert("rolling", std::move(rolling_summaries));
   const bool completed = incomplete.empty();
   summary.insert("completed", completed);
   if (!incomplete.empty()) summary.insert("incomplete", std::move(incomplete));

@@ -161,6 +161,8 @@ struct RollingStudy {
   bool reverse = false;          // travel in −y
   std::vector<RollingStateSpec> states;
   std::optional<SlipSweep> sweep;
+  // Its own mesh (the paper rolls on 80 × 46 while its static studies use 120 × 46); unset: the case's.
+  std::optional<MeshSettings> mesh;
 };
 
 struct Case {

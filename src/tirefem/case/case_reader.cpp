@@ -182,6 +182,16 @@ class Checker {
     }
   }
 
+  void mesh(const MeshSettings& m, const std::string& path, std::size_t zones) const {
+    if (m.circumferential_elements < 3)
+      fail(join(path, "circumferential_elements"), fmt::format("must be ≥ 3 (got {})", m.circumferential_elements));
+    if (m.meridional_elements < static_cast<int>(zones))
+      fail(join(path, "meridional_elements"),
+           fmt::format("must be ≥ the number of zones, {} (got {})", zones, m.meridional_elements));
+    finite(m.circumferential_refinement, join(path, "circumferential_refinement"));
+    if (!(m.circumferential_refinement >= 1.0))
+      fail(join(path, "circumferential_refinement"), fmt::format("must be ≥ 1 (got {})", m.circumferential_refinement));
+  }
   void contact(const ContactSettings& s, const std::string& path) const {
     int_range(s.quadrature, 1, kMaxQuadrature, join(path, "quadrature"));
     at_least(s.max_contact_iterations, 1, join(path, "max_contact_iterations"));
@@ -350,16 +360,9 @@ class Checker {
     positive(t.tread_stiffness, "tyre.tread.stiffness");
     positive(t.tread_shear_modulus, "tyre.tread.shear_modulus");
 
-    if (c.mesh.circumferential_elements < 3)
-      fail("mesh.circumferential_elements",
-           fmt::format("must be ≥ 3 (got {})", c.mesh.circumferential_elements));
-    if (c.mesh.meridional_elements < static_cast<int>(t.zones.size()))
-      fail("mesh.meridional_elements", fmt::format("must be ≥ the number of zones, {} (got {})",
-                                                   t.zones.size(), c.mesh.meridional_elements));
-    finite(c.mesh.circumferential_refinement, "mesh.circumferential_refinement");
-    if (!(c.mesh.circumferential_refinement >= 1.0))
-      fail("mesh.circumferential_refinement",
-           fmt::format("must be ≥ 1 (got {})", c.mesh.circumferential_refinement));
+    mesh(c.mesh, "mesh", t.zones.size());
+    for (std::size_t i = 0; i < c.rolling.size(); ++i)
+      if (c.rolling[i].mesh) mesh(*c.rolling[i].mesh, join(index("rolling", i), "mesh"), t.zones.size());
 
     if (c.inflation.enabled)
       positive(c.inflation.pressure, "inflation.pressure");
@@ -790,11 +793,22 @@ class Reader {
   //   sweep                      { from = -0.1, to = 0.1, points = 15 }: Qy(κ) at `points` (2..200) slips
   //                              evenly in [from, to], −1 < from < to ≤ 10
   // At least one state or a sweep.
-  RollingStudy rolling(const toml::node& n, const std::string& path) {
+  // [mesh], or a study's own mesh table (keys missing there are the case's).
+  MeshSettings mesh(const toml::node& n, const std::string& path, MeshSettings m) {
     const toml::table& t =
-        table(n, path,
-              {"name", "support", "target_load", "load_tolerance", "friction", "reverse", "states", "sweep"});
+        table(n, path, {"circumferential_elements", "meridional_elements", "half_model", "circumferential_refinement"});
+    opt_integer(t, path, "circumferential_elements", m.circumferential_elements);
+    opt_integer(t, path, "meridional_elements", m.meridional_elements);
+    opt_bool(t, path, "half_model", m.half_model);
+    opt_number(t, path, "circumferential_refinement", m.circumferential_refinement, "");
+    return m;
+  }
+
+  RollingStudy rolling(const toml::node& n, const std::string& path, const MeshSettings& case_mesh) {
+    const toml::table& t = table(
+        n, path, {"name", "support", "target_load", "load_tolerance", "friction", "reverse", "states", "sweep", "mesh"});
     RollingStudy s;
+    if (const toml::node* v = get(t, path, "mesh")) s.mesh = mesh(*v, join(path, "mesh"), case_mesh);
     study_common(t, path, s);
     opt_number(t, path, "target_load", s.target_load, " (N)");
     opt_number(t, path, "load_tolerance", s.load_tolerance, " (relative)");
@@ -882,15 +896,7 @@ class Reader {
     if (const toml::node* v = get(r, "", "title")) c.title = string(*v, "title");
     c.tyre = tyre(need(r, "", "tyre", "a table [tyre]"), "tyre");
     if (c.title.empty()) c.title = c.tyre.name;
-    if (const toml::node* v = get(r, "", "mesh")) {
-      const toml::table& m = table(
-          *v, "mesh",
-          {"circumferential_elements", "meridional_elements", "half_model", "circumferential_refinement"});
-      opt_integer(m, "mesh", "circumferential_elements", c.mesh.circumferential_elements);
-      opt_integer(m, "mesh", "meridional_elements", c.mesh.meridional_elements);
-      opt_bool(m, "mesh", "half_model", c.mesh.half_model);
-      opt_number(m, "mesh", "circumferential_refinement", c.mesh.circumferential_refinement, "");
-    }
+    if (const toml::node* v = get(r, "", "mesh")) c.mesh = mesh(*v, "mesh", c.mesh);
     if (const toml::node* v = get(r, "", "inflation")) {
       const toml::table& m = table(
           *v, "inflation", {"enabled", "pressure", "linear", "max_newton_iterations", "residual_tolerance"});
@@ -913,7 +919,7 @@ class Reader {
     }
     if (const toml::node* v = get(r, "", "rolling")) {
       const toml::array& a = array(*v, "rolling", "tables [[rolling]]");
-      for (std::size_t i = 0; i < a.size(); ++i) c.rolling.push_back(rolling(a[i], index("rolling", i)));
+      for (std::size_t i = 0; i < a.size(); ++i) c.rolling.push_back(rolling(a[i], index("rolling", i), c.mesh));
     }
     return c;
   }

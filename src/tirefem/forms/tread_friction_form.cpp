@@ -43,9 +43,13 @@ void TreadFrictionForm::add_pattern(PatternBuilder& pattern) const {
   // line inside the window (lines of one strip of elements give the same block).
   std::vector<std::vector<int>> seen;
   for (const auto& line : lines_) {
+    // The window's points and their neighbours on the line (an entry anchor may lie just outside).
     std::vector<int> elements;
-    for (int q : line)
-      if (window_[q]) elements.push_back(points_[q].element);
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      const bool near = window_[line[i]] || (i > 0 && window_[line[i - 1]]) ||
+                        (i + 1 < line.size() && window_[line[i + 1]]);
+      if (near) elements.push_back(points_[line[i]].element);
+    }
     std::sort(elements.begin(), elements.end());
     elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
     if (elements.empty() || std::find(seen.begin(), seen.end(), elements) != seen.end()) continue;
@@ -190,11 +194,20 @@ void TreadFrictionForm::assemble(const FormInput& input, SparseSystem& system) c
           anchor_shear + rolling_radius_ * (flow_angle(q) - anchor_angle) - (k.travel.value - anchor_travel);
       magnitude = c * shear;
       d_self = -c * k.travel.gradient;
+      // Released plan: the entry weight w = −g_a / (g_b − g_a) follows u too (frozen: a constant).
+      Eigen::Vector3d dw_a = Eigen::Vector3d::Zero(), dw_b = Eigen::Vector3d::Zero();
+      if (frozen_.empty() && pp.anchor_a != pp.anchor_b && wb > 0.0 && wb < 1.0) {
+        const double ga = ka.penetration.value, gb = kb.penetration.value, d2 = (gb - ga) * (gb - ga);
+        const double ds_dw = -rolling_radius_ * (flow_angle(pp.anchor_b) - flow_angle(pp.anchor_a)) +
+                             (kb.travel.value - ka.travel.value);
+        dw_a = c * ds_dw * (-gb / d2) * ka.penetration.gradient;
+        dw_b = c * ds_dw * (ga / d2) * kb.penetration.gradient;
+      }
       other[0] = pp.anchor_a;
-      d_other[0] = c * (wa * ka.travel.gradient + d_anchor_shear);
+      d_other[0] = c * (wa * ka.travel.gradient + d_anchor_shear) + dw_a;
       if (pp.anchor_b != pp.anchor_a) {
         other[1] = pp.anchor_b;
-        d_other[1] = c * wb * kb.travel.gradient;
+        d_other[1] = c * wb * kb.travel.gradient + dw_b;
       } else {
         d_other[0] += c * wb * ka.travel.gradient;
       }
