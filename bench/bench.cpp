@@ -1,5 +1,8 @@
 // Benchmark of the standard runs on the example tyre (not a test): prints DOF, iterations,
-// factorisations and where the time goes. Usage: tirefem_bench [CASE.toml]
+// factorisations and where the time goes.
+// Usage: tirefem_bench [CASE.toml [two_level|single_loop]]   inflation + the plane load curve 0–40 mm
+//        tirefem_bench rolling [CASE.toml]                    one rolling state + a 15-point slip sweep
+//                                                             (mesh and μ of the case's first rolling study)
 #include <chrono>
 #include <cstdio>
 #include <string>
@@ -9,6 +12,7 @@
 
 #include "tirefem/analysis/footprint.hpp"
 #include "tirefem/analysis/inflation.hpp"
+#include "tirefem/analysis/rolling.hpp"
 #include "tirefem/case/case_reader.hpp"
 #include "tirefem/results/shell_results.hpp"
 
@@ -32,10 +36,63 @@ void print_counters(const std::string& name, const tirefem::SolveCounters& c) {
   fmt::print("  total                 {:>8.3f} s\n", c.wall_s);
 }
 
+void print_rolling_counts(const std::string& name, const tirefem::RollingSolveCounts& c) {
+  fmt::print("{:<28} {:>5} Newton iterations, {:>3} factorisations, {:>2} contact iterations, {:>7.3f} s\n", name,
+             c.newton_iterations, c.factorizations, c.contact_iterations, c.time_s);
+}
+
+// The rolling benchmark: on the case's rolling mesh (80 × 46 in the example), the footprint at
+// 3700 N, free rolling, one state with stick and slip (κ = 0.02) and a 15-point slip sweep −0.15 … 0.15.
+int rolling_benchmark(const std::string& file) {
+  using namespace tirefem;
+  const auto t0 = std::chrono::steady_clock::now();
+  const Case c = read_case(file);
+  RollingStudy study = c.rolling.empty() ? RollingStudy{} : c.rolling.front();
+  const MeshSettings mesh = study.mesh.value_or(c.mesh);
+  const TyreMesh tm = build_tyre_mesh(c.tyre, mesh);
+  study.name = "bench";
+  RollingStateSpec state;
+  state.kind = RollingStateSpec::Kind::given_slip;
+  state.slip = 0.02;
+  study.states = {RollingStateSpec{}, state};  // free rolling (its counts), then the state
+  study.sweep = SlipSweep{-0.15, 0.15, 15};
+  fmt::print("tirefem rolling benchmark: {} ({} threads), {} x {} mesh, {} DOF (free {}), μ = {}\n", c.title,
+             omp_get_max_threads(), mesh.circumferential_elements, mesh.meridional_elements, tm.mesh.dof_count(),
+             tm.mesh.dof_count() - static_cast<int>(tm.fixed_dofs.size()), study.friction);
+  const RollingResult r = run_rolling(tm, c.tyre, c.inflation, c.contact, study);
+  print_counters("footprint (inflation + static loading to 3700 N)", r.footprint.counters);
+  print_counters(fmt::format("rolling phase: {}", r.completed ? "completed" : "FAILED: " + r.failure), r.counters);
+  RollingSolveCounts sweep;
+  for (const SweepPoint& p : r.sweep) {
+    sweep.newton_iterations += p.counts.newton_iterations;
+    sweep.factorizations += p.counts.factorizations;
+    sweep.contact_iterations += p.counts.contact_iterations;
+    sweep.time_s += p.counts.time_s;
+  }
+  if (r.effective_rolling_radius_mm)
+    fmt::print("free rolling: Re {:.3f} mm, slip stiffness {:.0f} N\n", *r.effective_rolling_radius_mm,
+               r.slip_stiffness_N.value_or(0.0));
+  if (!r.states.empty()) print_rolling_counts("free rolling (secant on Rk)", r.states.front().counts);
+  for (std::size_t i = 1; i < r.states.size(); ++i)
+    print_rolling_counts(fmt::format("one state, κ = {:g}", r.states[i].spec.slip), r.states[i].counts);
+  print_rolling_counts(fmt::format("slip sweep, {} points", r.sweep.size()), sweep);
+  fmt::print("total                        {:.3f} s\n",
+             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  return r.completed ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   using namespace tirefem;
+  if (argc > 1 && std::string(argv[1]) == "rolling") {
+    try {
+      return rolling_benchmark(argc > 2 ? argv[2] : std::string(TIREFEM_SOURCE_DIR) + "/examples/175-70R13.toml");
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "tirefem_bench: %s\n", e.what());
+      return 2;
+    }
+  }
   const std::string file = argc > 1 ? argv[1] : std::string(TIREFEM_SOURCE_DIR) + "/examples/175-70R13.toml";
   try {
     const auto t0 = std::chrono::steady_clock::now();

@@ -138,6 +138,21 @@ TEST(Cli, CoarseCaseKeepsInStepWithTheExample) {
     EXPECT_EQ(a.target_load, b.target_load) << a.name;
     EXPECT_EQ(a.load_tolerance, b.load_tolerance) << a.name;
   }
+  ASSERT_EQ(coarse.rolling.size(), example.rolling.size()) << "the coarse case must keep all rolling studies";
+  for (std::size_t i = 0; i < example.rolling.size(); ++i) {
+    const auto &a = coarse.rolling[i], &b = example.rolling[i];
+    EXPECT_EQ(a.name, b.name);
+    EXPECT_EQ(a.support.kind, b.support.kind) << a.name;
+    EXPECT_EQ(a.friction, b.friction) << a.name;
+    EXPECT_EQ(a.target_load, b.target_load) << a.name;
+    ASSERT_EQ(a.states.size(), b.states.size()) << a.name;
+    for (std::size_t k = 0; k < a.states.size(); ++k) {
+      EXPECT_EQ(a.states[k].kind, b.states[k].kind) << a.name;
+      EXPECT_EQ(a.states[k].name, b.states[k].name) << a.name;
+      EXPECT_EQ(a.states[k].slip, b.states[k].slip) << a.name;
+    }
+    EXPECT_EQ(a.sweep.has_value(), b.sweep.has_value()) << a.name;
+  }
 }
 
 TEST(Cli, RunWritesAllResultsOfTheCoarseCase) {
@@ -152,13 +167,21 @@ TEST(Cli, RunWritesAllResultsOfTheCoarseCase) {
                         "footprint_3700N/tread_points.csv", "footprint_3700N/meridian_under_patch.csv",
                         "footprint_3700N/belt_tension_equator.csv", "plots/footprint_3700N_footprint.gp",
                         "plots/footprint_3700N_pressure_s_phi.gp", "plots/footprint_3700N_cord_strain.gp",
-                        "plots/footprint_3700N_belt_tension.gp"})
+                        "plots/footprint_3700N_belt_tension.gp", "rolling_plane/states.csv",
+                        "rolling_plane/slip_sweep.csv", "rolling_plane/belt_tension_equator.csv",
+                        "rolling_plane/footprint_load_points.csv", "rolling_plane/traction/tread_points.csv",
+                        "rolling_plane/traction/tread_points.vtu", "rolling_plane/traction/shell.vtu",
+                        "rolling_plane/full_slip_spinning/tread_points.csv", "plots/rolling_plane_slip_curve.gp",
+                        "plots/rolling_plane_traction_traction.gp", "plots/rolling_plane_belt_tension.gp",
+                        "rolling_drum/states.csv", "rolling_drum/traction/tread_points.csv"})
     EXPECT_TRUE(fs::exists(out / f)) << f;
   // Plots are rendered only when gnuplot is on PATH (otherwise the scripts above are all there is).
   if (gnuplot_on_path()) {
     for (const char* f : {"plots/load_characteristic.png", "plots/load_characteristic.svg",
                           "plots/footprint_3700N_footprint.png", "plots/footprint_3700N_pressure_s_phi.png",
-                          "plots/footprint_3700N_cord_strain.png", "plots/footprint_3700N_belt_tension.png"})
+                          "plots/footprint_3700N_cord_strain.png", "plots/footprint_3700N_belt_tension.png",
+                          "plots/rolling_plane_slip_curve.png", "plots/rolling_plane_traction_traction.png",
+                          "plots/rolling_plane_belt_tension.png"})
       EXPECT_TRUE(fs::exists(out / f)) << f;
   } else {
     std::printf("  gnuplot is not on PATH: rendered plots not checked\n");
@@ -171,6 +194,10 @@ TEST(Cli, RunWritesAllResultsOfTheCoarseCase) {
   EXPECT_NE(summary.find("\"converged\" : true"), std::string::npos);
   EXPECT_EQ(top_level_value(summary, "load_curves"), "[") << "summary.json: load_curves must be an array";
   EXPECT_EQ(top_level_value(summary, "footprints"), "[") << "summary.json: footprints must be an array";
+  EXPECT_EQ(top_level_value(summary, "rolling"), "[") << "summary.json: rolling must be an array";
+  for (const char* key : {"\"effective_rolling_radius_mm\"", "\"slip_stiffness_N\"", "\"Qy_N\"", "\"Mx_Nmm\"",
+                          "\"stick_area_fraction\"", "\"loaded_radius_mm\"", "\"full_slip\""})
+    EXPECT_NE(summary.find(key), std::string::npos) << key;
   EXPECT_EQ(top_level_value(summary, "completed"), "true") << "summary.json: every study must have completed";
   fs::remove_all(out.parent_path());
 }

@@ -45,6 +45,8 @@ RollingFigures rolling_figures(const std::vector<TreadPoint>& points, const std:
 }
 
 namespace {
+constexpr int kSingleLoopIterations = 8;
+
 int count_plan_changes(const FrictionPlan& a, const FrictionPlan& b) {
   int n = 0;
   for (std::size_t k = 0; k < a.size(); ++k) n += a[k].status != b[k].status || a[k].sign != b[k].sign;
@@ -111,10 +113,14 @@ ContactSolveOutcome solve_rolling_state(NewtonSolver& newton, WinklerContactForm
   const Eigen::VectorXd start = u;
   contact.release_region();
   friction.release_plan();
+  // Near a stick/slip boundary the plan may cycle between iterates: after a few single-loop iterations
+  // the two-level loop takes over from the last iterate (from the start if that one went astray).
+  const int max_iterations = newton.max_iterations();
+  newton.set_max_iterations(std::min(max_iterations, kSingleLoopIterations));
   const NewtonOutcome n = newton.solve(u, 1.0);
+  newton.set_max_iterations(max_iterations);
   if (n.converged) return {true, 1, n.iterations, 0, {}};
-  // The plan may cycle between iterates near a stick/slip boundary: the two-level loop settles it.
-  u = start;
+  if (!u.allFinite() || !(n.relative_residual < 1.0)) u = start;
   ContactSolveOutcome out = two_level(newton, contact, friction, u, settings);
   out.newton_iterations += n.iterations;
   return out;
@@ -291,12 +297,15 @@ class RollingModel {
         best = &k;
     return best;
   }
-  // Secant in 1/Rk (linear in κ) through the two nearest converged states; else the start.
+  // Secant in 1/Rk (linear in κ) through the two nearest converged states, when the target is within
+  // twice their spacing (extrapolating further from two close states, e.g. the free-rolling iterates,
+  // amplifies their difference); else the start.
   Eigen::VectorXd predict(double p, const Eigen::VectorXd& start) const {
     const Known* a = nearest(p);
     const Known* b = a ? nearest(p, a) : nullptr;
     if (!a || !b) return start;
     const double t = (p - a->inverse_radius) / (b->inverse_radius - a->inverse_radius);
+    if (std::abs(t) > 2.0) return start;
     return a->u + t * (b->u - a->u);
   }
 

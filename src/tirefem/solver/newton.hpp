@@ -46,6 +46,8 @@ class NewtonSolver {
   int total_iterations() const { return total_iterations_; }
   double residual_tolerance() const { return settings_.residual_tolerance; }
   void set_residual_tolerance(double tolerance) { settings_.residual_tolerance = tolerance; }
+  int max_iterations() const { return settings_.max_iterations; }
+  void set_max_iterations(int iterations) { settings_.max_iterations = iterations; }
 
  private:
   bool solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du);
