@@ -156,10 +156,20 @@ TEST(CaseReaderRolling, ReadsAFullStudy) {
   EXPECT_FALSE(sub.rolling[0].sweep.has_value());
 }
 
-TEST(CaseReaderRolling, TheExampleHasNoRollingStudies) {
+TEST(CaseReaderRolling, TheExampleHasThePapersRollingStudies) {
   const Case c = read_case(kExample);
-  EXPECT_TRUE(c.rolling.empty());
-  EXPECT_EQ(c.footprints.size(), 1u);
+  ASSERT_EQ(c.rolling.size(), 2u);
+  const RollingStudy& plane = c.rolling[0];
+  EXPECT_EQ(plane.support.kind, SupportDescription::Kind::plane);
+  EXPECT_EQ(plane.friction, 0.7);
+  EXPECT_EQ(plane.target_load, 3700.0);
+  ASSERT_TRUE(plane.mesh.has_value());
+  EXPECT_EQ(plane.mesh->circumferential_elements, 80);
+  EXPECT_EQ(plane.mesh->meridional_elements, 46);
+  EXPECT_EQ(plane.states.size(), 5u);
+  ASSERT_TRUE(plane.sweep.has_value());
+  EXPECT_EQ(plane.sweep->points, 15);
+  EXPECT_EQ(c.rolling[1].support.kind, SupportDescription::Kind::drum);
 }
 
 TEST(CaseReaderRolling, RootAcceptsRolling) {
@@ -383,12 +393,12 @@ TEST(CaseReaderRolling, NamesAreUniqueAmongAllStudies) {
                      "\n[[rolling]]\nname = \"footprint_3700N\"\nsupport = { kind = \"plane\" }\n"
                      "states = [{ state = \"free\" }]\n";
   EXPECT_EQ(error_of(text), where(text, "\"footprint_3700N\"\nsupport = { kind = \"plane\" }\nstates") +
-                                "rolling[0].name: duplicate name \"footprint_3700N\" (already used by "
+                                "rolling[2].name: duplicate name \"footprint_3700N\" (already used by "
                                 "footprint[0].name); load curves, footprints and rolling studies need "
                                 "distinct names");
   EXPECT_CONTAINS(error_of(example_text() + "\n[[rolling]]\nname = \"drum\"\nsupport = { kind = \"plane\" }\n"
                                             "states = [{ state = \"free\" }]\n"),
-                  "rolling[0].name: duplicate name \"drum\" (already used by load_curve[1].name)");
+                  "rolling[2].name: duplicate name \"drum\" (already used by load_curve[1].name)");
   EXPECT_CONTAINS(error_of(tyre_with("[[rolling]]\nname = \"a\"\nsupport = { kind = \"plane\" }\n"
                                      "states = [{ state = \"free\" }]\n"
                                      "[[rolling]]\nname = \"a\"\nsupport = { kind = \"plane\" }\n"
