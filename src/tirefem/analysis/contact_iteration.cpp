@@ -28,14 +28,29 @@ ContactSolveOutcome solve_contact(NewtonSolver& newton, WinklerContactForm& cont
     return out;
   }
   // Two-level iteration: Ωc from the starting state (the prediction), then revised after each solve.
-  // While Ωc still changes, Newton stops at the provisional tolerance; once it has settled, a final
-  // solve to the full tolerance (usually one or two iterations) confirms it.
+  std::vector<char> region;
+  const auto freeze = [&](const Eigen::VectorXd& v) {
+    if (region.empty()) region = contact.region(v);
+    contact.freeze_region(region);
+  };
+  const auto revise = [&](const Eigen::VectorXd& v) {
+    std::vector<char> revised = contact.region(v);
+    const int changes = count_changes(region, revised);
+    region = std::move(revised);
+    return changes;
+  };
+  return two_level_iteration(newton, u, settings, freeze, revise);
+}
+
+ContactSolveOutcome two_level_iteration(NewtonSolver& newton, Eigen::VectorXd& u, const ContactSettings& settings,
+                                        const std::function<void(const Eigen::VectorXd&)>& freeze,
+                                        const std::function<int(const Eigen::VectorXd&)>& revise) {
+  ContactSolveOutcome out;
   const double final_tolerance = newton.residual_tolerance();
   const double provisional = std::max(settings.provisional_tolerance, final_tolerance);
-  std::vector<char> region = contact.region(u);
   bool settled = false;
   for (int outer = 1; outer <= settings.max_contact_iterations; ++outer) {
-    contact.freeze_region(region);
+    freeze(u);
     newton.set_residual_tolerance(settled ? final_tolerance : provisional);
     const NewtonOutcome n = newton.solve(u, 1.0);
     newton.set_residual_tolerance(final_tolerance);
@@ -46,18 +61,16 @@ ContactSolveOutcome solve_contact(NewtonSolver& newton, WinklerContactForm& cont
                                 n.relative_residual, n.iterations);
       return out;
     }
-    std::vector<char> revised = contact.region(u);
-    out.region_changes = count_changes(region, revised);
+    out.region_changes = revise(u);
     if (out.region_changes <= settings.region_tolerance) {
       if (settled || provisional <= final_tolerance) {
         out.converged = true;
         return out;
       }
-      settled = true;  // polish with the full tolerance, then check the region once more
+      settled = true;  // polish with the full tolerance, then check once more
     } else {
       settled = false;
     }
-    region = std::move(revised);
   }
   out.failure = fmt::format("contact region not settled after {} iterations ({} points still changing)",
                             settings.max_contact_iterations, out.region_changes);

@@ -3,6 +3,7 @@
 // loop revises the contact region Ωc by eq. 5, inner Newton loop solves eq. 13 with Ωc frozen, until Ωc
 // repeats) or the single-loop variant (Ωc = {g > 0} at every Newton iterate), and the path of load points
 // in the deflection δz with prediction and cut-back.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,15 @@ struct ContactSolveOutcome {
   int region_changes = 0;      // points whose membership of Ωc changed in the last outer iteration
   std::string failure;
 };
+
+// The outer loop of the two-level iteration over whatever the inner Newton loop holds frozen (the
+// contact region; in rolling also the stick/slip plan): freeze(u) fixes it from u, revise(u) proposes the
+// next one from the solution and returns how many points it changes. While it still changes, Newton stops
+// at the provisional tolerance; once it has settled (≤ region_tolerance changes), a final solve to the
+// full tolerance (usually one or two iterations) confirms it.
+ContactSolveOutcome two_level_iteration(NewtonSolver& newton, Eigen::VectorXd& u, const ContactSettings& settings,
+                                        const std::function<void(const Eigen::VectorXd&)>& freeze,
+                                        const std::function<int(const Eigen::VectorXd&)>& revise);
 
 // Solves at the contact form's current deflection, starting from u (overwritten by the solution; left at
 // the last iterate on failure).

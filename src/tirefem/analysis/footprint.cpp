@@ -184,18 +184,7 @@ class StaticContactRun {
     result_.final_state.tread = contact_->evaluate(path_->displacement());
     SolveCounters& c = result_.counters;
     c.load_steps = static_cast<int>(result_.points.size()) - 1;
-    c.newton_iterations = newton_->total_iterations();
-    c.factorizations = newton_->linear_stats().factorizations;
-    c.analysis_s = newton_->linear_stats().analysis_s;
-    c.factorization_s = newton_->linear_stats().factorization_s;
-    c.solve_s = newton_->linear_stats().solve_s;
-    c.used_lu = newton_->linear_stats().used_lu;
-    c.krylov_solves = newton_->linear_stats().krylov_solves;
-    c.krylov_failures = newton_->linear_stats().krylov_failures;
-    c.krylov_iterations = newton_->linear_stats().krylov_iterations;
-    c.krylov_s = newton_->linear_stats().krylov_s;
-    c.assemblies = problem_->stats().assemblies;
-    c.assembly_s = problem_->stats().assembly_s;
+    add_counters(c, *newton_, *problem_);
   }
 
   double last_Qz() const { return result_.points.back().patch.Qz_N; }

@@ -24,18 +24,23 @@ std::unique_ptr<NonlinearProblem> inflation_problem(const TyreMesh& tm, double p
   return std::make_unique<NonlinearProblem>(std::move(dofs), std::move(forms));
 }
 
-void add_counters(SolveCounters& c, NewtonSolver& newton, const NonlinearProblem& problem) {
+}  // namespace
+
+void add_counters(SolveCounters& c, const NewtonSolver& newton, const NonlinearProblem& problem) {
+  const LinearSolverStats& l = newton.linear_stats();
   c.newton_iterations += newton.total_iterations();
-  c.factorizations += newton.linear_stats().factorizations;
-  c.analysis_s += newton.linear_stats().analysis_s;
-  c.factorization_s += newton.linear_stats().factorization_s;
-  c.solve_s += newton.linear_stats().solve_s;
-  c.used_lu = c.used_lu || newton.linear_stats().used_lu;
+  c.factorizations += l.factorizations;
+  c.analysis_s += l.analysis_s;
+  c.factorization_s += l.factorization_s;
+  c.solve_s += l.solve_s;
+  c.used_lu = c.used_lu || l.used_lu;
+  c.krylov_solves += l.krylov_solves;
+  c.krylov_failures += l.krylov_failures;
+  c.krylov_iterations += l.krylov_iterations;
+  c.krylov_s += l.krylov_s;
   c.assemblies += problem.stats().assemblies;
   c.assembly_s += problem.stats().assembly_s;
 }
-
-}  // namespace
 
 InflationResult run_inflation(const TyreMesh& tm, const InflationSettings& settings,
                               const ProgressSink& progress) {

@@ -25,6 +25,9 @@ struct SolveCounters {
   double krylov_s = 0.0;
 };
 
+// Adds the work of a Newton solver and its problem (iterations, factorisations, times) to c.
+void add_counters(SolveCounters& c, const NewtonSolver& newton, const NonlinearProblem& problem);
+
 struct InflationResult {
   bool converged = false;
   Kinematics kinematics = Kinematics::nonlinear;

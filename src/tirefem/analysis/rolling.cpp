@@ -58,47 +58,26 @@ int count_changes(const std::vector<char>& a, const std::vector<char>& b) {
   return n;
 }
 
+// The two-level loop with the contact region (eq. 5) and the stick/slip plan (eq. 15) frozen and revised
+// together (MODEL.md §5).
 ContactSolveOutcome two_level(NewtonSolver& newton, WinklerContactForm& contact, TreadFrictionForm& friction,
                               Eigen::VectorXd& u, const ContactSettings& settings) {
-  // As solve_contact's two-level loop, the outer loop revising the contact region (eq. 5) and the
-  // stick/slip plan (eq. 15) together (MODEL.md §5).
-  ContactSolveOutcome out;
-  const double final_tolerance = newton.residual_tolerance();
-  const double provisional = std::max(settings.provisional_tolerance, final_tolerance);
-  std::vector<char> region = contact.region(u);
-  FrictionPlan plan = friction.plan(u, region);
-  bool settled = false;
-  for (int outer = 1; outer <= settings.max_contact_iterations; ++outer) {
+  std::vector<char> region;
+  FrictionPlan plan;
+  const auto freeze = [&](const Eigen::VectorXd& v) {
+    if (region.empty()) region = contact.region(v), plan = friction.plan(v, region);
     contact.freeze_region(region);
     friction.freeze_plan(plan);
-    newton.set_residual_tolerance(settled ? final_tolerance : provisional);
-    const NewtonOutcome n = newton.solve(u, 1.0);
-    newton.set_residual_tolerance(final_tolerance);
-    out.contact_iterations = outer;
-    out.newton_iterations += n.iterations;
-    if (!n.converged) {
-      out.failure = fmt::format("Newton in contact iteration {}: residual {:.1e} after {} iterations", outer,
-                                n.relative_residual, n.iterations);
-      break;
-    }
-    std::vector<char> revised_region = contact.region(u);
-    FrictionPlan revised_plan = friction.plan(u, revised_region);
-    out.region_changes = count_changes(region, revised_region) + count_plan_changes(plan, revised_plan);
+  };
+  const auto revise = [&](const Eigen::VectorXd& v) {
+    std::vector<char> revised_region = contact.region(v);
+    FrictionPlan revised_plan = friction.plan(v, revised_region);
+    const int changes = count_changes(region, revised_region) + count_plan_changes(plan, revised_plan);
     region = std::move(revised_region);
     plan = std::move(revised_plan);
-    if (out.region_changes <= settings.region_tolerance) {
-      if (settled || provisional <= final_tolerance) {
-        out.converged = true;
-        break;
-      }
-      settled = true;
-    } else {
-      settled = false;
-    }
-  }
-  if (!out.converged && out.failure.empty())
-    out.failure = fmt::format("contact region and stick/slip zones not settled after {} iterations ({} points "
-                              "still changing)", settings.max_contact_iterations, out.region_changes);
+    return changes;
+  };
+  ContactSolveOutcome out = two_level_iteration(newton, u, settings, freeze, revise);
   contact.release_region();
   friction.release_plan();
   return out;
@@ -272,20 +251,7 @@ class RollingModel {
     state.normal = contact_->evaluate(s.u);
     state.tangential = friction_->evaluate(s.u);
   }
-  void finish(SolveCounters& c) const {
-    c.newton_iterations = newton_->total_iterations();
-    c.factorizations = newton_->linear_stats().factorizations;
-    c.analysis_s = newton_->linear_stats().analysis_s;
-    c.factorization_s = newton_->linear_stats().factorization_s;
-    c.solve_s = newton_->linear_stats().solve_s;
-    c.used_lu = newton_->linear_stats().used_lu;
-    c.krylov_solves = newton_->linear_stats().krylov_solves;
-    c.krylov_failures = newton_->linear_stats().krylov_failures;
-    c.krylov_iterations = newton_->linear_stats().krylov_iterations;
-    c.krylov_s = newton_->linear_stats().krylov_s;
-    c.assemblies = problem_->stats().assemblies;
-    c.assembly_s = problem_->stats().assembly_s;
-  }
+  void finish(SolveCounters& c) const { add_counters(c, *newton_, *problem_); }
 
  private:
   struct Known {
