@@ -6,30 +6,15 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <fstream>
-#include <sstream>
+#include "case_reader_test_support.hpp"
 
 namespace tirefem {
 namespace {
 
-const std::filesystem::path kExample = std::filesystem::path(TIREFEM_SOURCE_DIR) / "examples/175-70R13.toml";
-
-std::string example_text() {
-  std::ifstream in(kExample);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// The example up to (not including) its studies, i.e. the tyre, mesh and inflation only, plus `studies`.
-std::string tyre_with(std::string_view studies) {
-  std::string text = example_text();
-  const auto at = text.find("# Tread–road contact");
-  EXPECT_NE(at, std::string::npos);
-  text.erase(at);
-  return text + std::string(studies);
-}
+using case_test::error_of;
+using case_test::example_text;
+using case_test::kExample;
+using case_test::tyre_with;
 
 // A rolling study on the plane with one free state, plus `extra` lines (after the support line).
 std::string rolling_with(std::string_view extra,
@@ -40,25 +25,10 @@ std::string rolling_with(std::string_view extra,
 // One state table in the study.
 std::string state(std::string_view table) { return rolling_with("", fmt::format("states = [{}]", table)); }
 
-std::string error_of(const std::string& text) {
-  try {
-    parse_case(text, "case.toml");
-  } catch (const CaseError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
 // "case.toml:LINE:COL: " of the first occurrence of `needle` in `text` from its first [[rolling]] on.
 std::string where(const std::string& text, std::string_view needle) {
-  const auto at = text.find(needle, text.find("[[rolling]]"));
-  EXPECT_NE(at, std::string::npos) << needle;
-  const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(at), '\n');
-  const auto col = at - (text.rfind('\n', at) + 1) + 1;
-  return "case.toml:" + std::to_string(line) + ":" + std::to_string(col) + ": ";
+  return case_test::where(text, needle, text.find("[[rolling]]"));
 }
-
-#define EXPECT_CONTAINS(haystack, needle) EXPECT_NE((haystack).find(needle), std::string::npos) << (haystack)
 
 using Kind = RollingStateSpec::Kind;
 
@@ -418,14 +388,7 @@ TEST(CaseReaderRolling, ValidateCaseRunsTheSameChecks) {
   r.states = {
       {Kind::free, "free"}, {Kind::given_slip, "slip_0.05", 0.05}, {Kind::given_radius, "r", 0.0, 280.0}};
   good.rolling = {r};
-  auto error = [](const Case& c) {
-    try {
-      validate_case(c);
-    } catch (const CaseError& e) {
-      return std::string(e.what());
-    }
-    return std::string("(no error)");
-  };
+  const auto error = case_test::validation_error_of;
   const std::string file = kExample.string() + ": ";
   EXPECT_EQ(error(good), "(no error)");
 

@@ -4,53 +4,14 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <fstream>
-#include <sstream>
-
+#include "case_reader_test_support.hpp"
 #include "tirefem/element/section.hpp"
 #include "tirefem/tyre/meridian_profile.hpp"
 
 namespace tirefem {
 namespace {
 
-const std::filesystem::path kExample = std::filesystem::path(TIREFEM_SOURCE_DIR) / "examples/175-70R13.toml";
-
-std::string example_text() {
-  std::ifstream in(kExample);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// The example with one edit; fails the test if `from` is not in it exactly once.
-std::string edited(std::string_view from, std::string_view to) {
-  std::string text = example_text();
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  EXPECT_EQ(text.find(from, at + 1), std::string::npos) << "not unique: " << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
-
-std::string error_of(const std::string& text) {
-  try {
-    parse_case(text, "case.toml");
-  } catch (const CaseError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
-// "case.toml:LINE:COL: " of the first occurrence of `needle` in `text`.
-std::string where(const std::string& text, std::string_view needle) {
-  const auto at = text.find(needle);
-  const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(at), '\n');
-  const auto col = at - (text.rfind('\n', at) + 1) + 1;
-  return "case.toml:" + std::to_string(line) + ":" + std::to_string(col) + ": ";
-}
-
-#define EXPECT_CONTAINS(haystack, needle) EXPECT_NE((haystack).find(needle), std::string::npos) << (haystack)
+using namespace case_test;
 
 TEST(CaseReader, ReadsTheExample) {
   const Case c = read_case(kExample);

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "tirefem/results/inflation_report.hpp"
+#include "tirefem/results/tread_point_grid.hpp"
 #include "tirefem/road/support_surface.hpp"
 
 namespace tirefem {
@@ -38,112 +39,21 @@ std::string support_description(const SupportDescription& s) {
   return "?";
 }
 
-// Sorted distinct values; values closer than a relative 1e-9 count as one (the tread points' parameters
-// are bit-identical along a grid line, the tolerance only guards against other producers).
-std::vector<double> distinct(std::vector<double> values, double& tolerance) {
-  std::sort(values.begin(), values.end());
-  double scale = 1.0;
-  for (double x : values) scale = std::max(scale, std::abs(x));
-  tolerance = 1e-9 * scale;
-  std::vector<double> out;
-  for (double x : values)
-    if (out.empty() || x - out.back() > tolerance) out.push_back(x);
-  return out;
-}
-
-int index_of(const std::vector<double>& sorted, double x, double tolerance) {
-  const auto it = std::lower_bound(sorted.begin(), sorted.end(), x - tolerance);
-  if (it == sorted.end() || *it > x + tolerance) throw std::logic_error("tread grid: value not found");
-  return static_cast<int>(it - sorted.begin());
-}
-
-// The tread points of a result as a structured grid over (u, v) = (s, φ); in a half model the columns
-// with s > 0 also appear mirrored (s → −s, x → −x), first, so the grid spans the whole patch.
-struct TreadGrid {
-  std::vector<double> u, v;    // column and row parameters, increasing
-  std::vector<char> mirrored;  // per column
-  std::vector<int> point;      // [j * nu + i]: tread point index, −1 = none
-  bool half_model = false;
-
-  int nu() const { return static_cast<int>(u.size()); }
-  int nv() const { return static_cast<int>(v.size()); }
-  int at(int i, int j) const { return point[static_cast<std::size_t>(j) * u.size() + i]; }
-};
-
+// The grid of a result's tread points (tread_point_grid.hpp), after checking that the final state has
+// one entry per tread point.
 TreadGrid tread_grid(const StaticContactResult& r) {
   const auto& pts = r.tread_points;
   if (pts.empty()) throw std::invalid_argument(fmt::format("contact result '{}': no tread points", r.name));
   if (r.final_state.tread.size() != pts.size())
     throw std::invalid_argument(fmt::format("contact result '{}': {} tread point states for {} tread points",
                                             r.name, r.final_state.tread.size(), pts.size()));
-  std::vector<double> us, vs;
-  for (const TreadPoint& p : pts) us.push_back(p.u), vs.push_back(p.v);
-  double tol_u = 0.0, tol_v = 0.0;
-  us = distinct(us, tol_u);
-  vs = distinct(vs, tol_v);
-  TreadGrid g;
-  g.half_model = r.half_model;
-  const int n0 = static_cast<int>(us.size());
-  std::vector<int> column(n0), mirror_column(n0, -1);
-  if (g.half_model)
-    for (int k = n0 - 1; k >= 0; --k)
-      if (us[k] > tol_u) {
-        mirror_column[k] = g.nu();
-        g.u.push_back(-us[k]);
-        g.mirrored.push_back(1);
-      }
-  for (int k = 0; k < n0; ++k) {
-    column[k] = g.nu();
-    g.u.push_back(us[k]);
-    g.mirrored.push_back(0);
-  }
-  g.v = vs;
-  g.point.assign(static_cast<std::size_t>(g.nu()) * g.nv(), -1);
-  for (int n = 0; n < static_cast<int>(pts.size()); ++n) {
-    const int k = index_of(us, pts[n].u, tol_u), j = index_of(vs, pts[n].v, tol_v);
-    g.point[static_cast<std::size_t>(j) * g.nu() + column[k]] = n;
-    if (mirror_column[k] >= 0) g.point[static_cast<std::size_t>(j) * g.nu() + mirror_column[k]] = n;
-  }
-  return g;
+  return tirefem::tread_grid(pts, r.half_model);
 }
 
 Eigen::Vector3d grid_position(const TreadGrid& g, const std::vector<TreadPointState>& states, int i, int j) {
   Eigen::Vector3d x = states[g.at(i, j)].position;
   if (g.mirrored[i]) x.x() = -x.x();
   return x;
-}
-
-// Points that define the patch: qn > 0, or (no contact at all) those of largest penetration.
-std::vector<char> patch_points(const std::vector<TreadPointState>& states) {
-  std::vector<char> active(states.size(), 0);
-  bool any = false;
-  double g_max = -std::numeric_limits<double>::infinity();
-  for (std::size_t n = 0; n < states.size(); ++n) {
-    if (states[n].pressure > 0) active[n] = 1, any = true;
-    g_max = std::max(g_max, states[n].penetration);
-  }
-  if (!any)
-    for (std::size_t n = 0; n < states.size(); ++n) active[n] = states[n].penetration >= g_max;
-  return active;
-}
-
-struct Window {
-  int i0, i1, j0, j1;  // inclusive grid index ranges
-};
-
-Window patch_window(const TreadGrid& g, const std::vector<TreadPointState>& states, int margin) {
-  const std::vector<char> active = patch_points(states);
-  Window w{g.nu(), -1, g.nv(), -1};
-  for (int j = 0; j < g.nv(); ++j)
-    for (int i = 0; i < g.nu(); ++i) {
-      const int n = g.at(i, j);
-      if (n < 0 || !active[n]) continue;
-      w.i0 = std::min(w.i0, i), w.i1 = std::max(w.i1, i);
-      w.j0 = std::min(w.j0, j), w.j1 = std::max(w.j1, j);
-    }
-  w.i0 = std::max(0, w.i0 - margin), w.i1 = std::min(g.nu() - 1, w.i1 + margin);
-  w.j0 = std::max(0, w.j0 - margin), w.j1 = std::min(g.nv() - 1, w.j1 + margin);
-  return w;
 }
 
 // (ξ, η) ∈ [0, 1]² with X = P0 (1−ξ)(1−η) + P1 ξ (1−η) + P2 ξ η + P3 (1−ξ) η, by Newton's method;
@@ -260,7 +170,7 @@ Plot load_characteristic_plot(const std::vector<const StaticContactResult*>& cur
 CsvTable tread_points_table(const StaticContactResult& r) {
   const TreadGrid g = tread_grid(r);
   const auto& states = r.final_state.tread;
-  const Window w = patch_window(g, states, kPatchMarginPoints);
+  const TreadWindow w = patch_window(g, states, kPatchMarginPoints);
   CsvTable t;
   t.comments = {
       fmt::format("tirefem: tread points of '{}' at deflection {:g} mm", r.name, r.final_state.deflection_mm),
@@ -284,15 +194,12 @@ CsvTable tread_points_table(const StaticContactResult& r) {
 HeatMap pressure_map_s_phi(const StaticContactResult& r) {
   const TreadGrid g = tread_grid(r);
   const auto& states = r.final_state.tread;
-  const Window w = patch_window(g, states, kPatchMarginPoints);
+  const TreadWindow w = patch_window(g, states, kPatchMarginPoints);
   HeatMap m;
   m.title = fmt::format("{}: contact pressure at δz = {:.2f} mm ({}, {})", r.name,
                         r.final_state.deflection_mm, support_label(r.support), theory_label(r.kinematics));
-  m.x_label = "s from the equator [mm]";
-  m.y_label = "φ [deg]";
+  set_s_phi_axes(m, g, w);
   m.value_label = "contact pressure [MPa]";
-  for (int i = w.i0; i <= w.i1; ++i) m.x.push_back(g.u[i]);
-  for (int j = w.j0; j <= w.j1; ++j) m.y.push_back(g.v[j] * kDeg);
   for (int j = w.j0; j <= w.j1; ++j) {
     std::vector<double> row;
     for (int i = w.i0; i <= w.i1; ++i) {
@@ -439,11 +346,24 @@ Plot circumferential_belt_plot(const CsvTable& t) {
             "φ [deg]",
             "tension per cord [N]",
             {}};
+  // One colour per state, one dash pattern per ply of the state ("<state>_<ply>_force_N").
+  static constexpr const char* kColours[] = {"#000000", "#e69f00", "#56b4e9", "#009e73", "#d55e00",
+                                             "#0072b2", "#cc79a7", "#999999", "#f0e442", "#8c564b"};
   const std::vector<double> phi = column_values(t, column(t, "phi_deg"));
-  for (std::size_t c = 0; c < t.columns.size(); ++c)
-    if (t.columns[c].ends_with("_force_N"))
-      plot.series.push_back(
-          {strip_suffix(t.columns[c], "_force_N"), phi, column_values(t, static_cast<int>(c)), "lines"});
+  std::vector<std::string> states;
+  std::string last_state;
+  int ply = 0;
+  for (std::size_t c = 0; c < t.columns.size(); ++c) {
+    if (!t.columns[c].ends_with("_force_N")) continue;
+    const std::string label = strip_suffix(t.columns[c], "_force_N");
+    const std::string state = label.substr(0, label.rfind('_'));
+    ply = state == last_state ? ply + 1 : 0;
+    last_state = state;
+    if (std::find(states.begin(), states.end(), state) == states.end()) states.push_back(state);
+    const std::size_t k = std::find(states.begin(), states.end(), state) - states.begin();
+    plot.series.push_back({label, phi, column_values(t, static_cast<int>(c)),
+                           fmt::format("lines lw 2 lc rgb '{}' dt {}", kColours[k % std::size(kColours)], 1 + ply)});
+  }
   return plot;
 }
 

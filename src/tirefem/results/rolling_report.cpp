@@ -2,12 +2,11 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <cmath>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
 
+#include "tirefem/results/tread_point_grid.hpp"
 #include "tirefem/road/support_surface.hpp"
 
 namespace tirefem {
@@ -28,39 +27,9 @@ const char* travel_name(bool reverse) { return reverse ? "-y" : "+y"; }
 std::string state_label(const RollingStateResult& s) {
   std::string text = fmt::format("'{}' ({}", s.name, rolling_state_kind_name(s.spec.kind));
   if (s.spec.kind == RollingStateSpec::Kind::full_slip) text += s.spec.braking ? ", locked" : ", spinning";
-  if (s.slip) text += fmt::format(", kappa = {:g}", *s.slip);
-  if (s.rolling_radius_mm) text += fmt::format(", Rk = {:g} mm", *s.rolling_radius_mm);
+  if (s.slip) text += fmt::format(", κ = {:.4g}", *s.slip);
+  if (s.rolling_radius_mm) text += fmt::format(", Rk = {:.2f} mm", *s.rolling_radius_mm);
   return text + ")";
-}
-
-// Tread points as a structured (s, φ) grid; a half model also gets its columns with s > 0 mirrored
-// (s → −s), first, so that the grid spans the whole patch. Same construction as footprint_report.cpp.
-struct TreadGrid {
-  std::vector<double> u, v;    // column and row parameters, increasing
-  std::vector<char> mirrored;  // per column
-  std::vector<int> point;      // [j * nu + i]: tread point index, −1 = none
-
-  int nu() const { return static_cast<int>(u.size()); }
-  int nv() const { return static_cast<int>(v.size()); }
-  int at(int i, int j) const { return point[static_cast<std::size_t>(j) * u.size() + i]; }
-};
-
-// Sorted distinct values (a relative 1e-9 apart) and the index of a value among them.
-std::vector<double> distinct(std::vector<double> values, double& tolerance) {
-  std::sort(values.begin(), values.end());
-  double scale = 1.0;
-  for (double x : values) scale = std::max(scale, std::abs(x));
-  tolerance = 1e-9 * scale;
-  std::vector<double> out;
-  for (double x : values)
-    if (out.empty() || x - out.back() > tolerance) out.push_back(x);
-  return out;
-}
-
-int index_of(const std::vector<double>& sorted, double x, double tolerance) {
-  const auto it = std::lower_bound(sorted.begin(), sorted.end(), x - tolerance);
-  if (it == sorted.end() || *it > x + tolerance) throw std::logic_error("tread grid: value not found");
-  return static_cast<int>(it - sorted.begin());
 }
 
 void check_state(const RollingResult& r, const RollingStateResult& s) {
@@ -72,57 +41,18 @@ void check_state(const RollingResult& r, const RollingStateResult& s) {
         r.name, s.name, s.normal.size(), s.tangential.size(), n));
 }
 
-TreadGrid tread_grid(const RollingResult& r) {
-  std::vector<double> us, vs;
-  for (const TreadPoint& p : r.tread_points) us.push_back(p.u), vs.push_back(p.v);
-  double tol_u = 0.0, tol_v = 0.0;
-  us = distinct(us, tol_u);
-  vs = distinct(vs, tol_v);
-  TreadGrid g;
-  const int n0 = static_cast<int>(us.size());
-  std::vector<int> column(n0), mirror_column(n0, -1);
-  if (r.half_model)
-    for (int k = n0 - 1; k >= 0; --k)
-      if (us[k] > tol_u) {
-        mirror_column[k] = g.nu();
-        g.u.push_back(-us[k]);
-        g.mirrored.push_back(1);
-      }
-  for (int k = 0; k < n0; ++k) {
-    column[k] = g.nu();
-    g.u.push_back(us[k]);
-    g.mirrored.push_back(0);
-  }
-  g.v = vs;
-  g.point.assign(static_cast<std::size_t>(g.nu()) * g.nv(), -1);
-  for (int n = 0; n < static_cast<int>(r.tread_points.size()); ++n) {
-    const int k = index_of(us, r.tread_points[n].u, tol_u), j = index_of(vs, r.tread_points[n].v, tol_v);
-    g.point[static_cast<std::size_t>(j) * g.nu() + column[k]] = n;
-    if (mirror_column[k] >= 0) g.point[static_cast<std::size_t>(j) * g.nu() + mirror_column[k]] = n;
-  }
-  return g;
-}
-
-struct Window {
-  int i0, i1, j0, j1;  // inclusive grid index ranges
+// The grid of a state's tread points (tread_point_grid.hpp) and its patch window: the points with qn > 0
+// (without contact: those of largest penetration) plus kPatchMarginPoints rows / columns.
+struct StateGrid {
+  TreadGrid grid;
+  TreadWindow window;
 };
 
-// The points with qn > 0 (without contact: those of largest penetration) plus `margin` rows / columns.
-Window patch_window(const TreadGrid& g, const std::vector<TreadPointState>& normal, int margin) {
-  bool any = false;
-  double g_max = -std::numeric_limits<double>::infinity();
-  for (const TreadPointState& s : normal) any = any || s.pressure > 0, g_max = std::max(g_max, s.penetration);
-  Window w{g.nu(), -1, g.nv(), -1};
-  for (int j = 0; j < g.nv(); ++j)
-    for (int i = 0; i < g.nu(); ++i) {
-      const int n = g.at(i, j);
-      if (n < 0 || !(any ? normal[n].pressure > 0 : normal[n].penetration >= g_max)) continue;
-      w.i0 = std::min(w.i0, i), w.i1 = std::max(w.i1, i);
-      w.j0 = std::min(w.j0, j), w.j1 = std::max(w.j1, j);
-    }
-  w.i0 = std::max(0, w.i0 - margin), w.i1 = std::min(g.nu() - 1, w.i1 + margin);
-  w.j0 = std::max(0, w.j0 - margin), w.j1 = std::min(g.nv() - 1, w.j1 + margin);
-  return w;
+StateGrid state_grid(const RollingResult& r, const RollingStateResult& s) {
+  check_state(r, s);
+  TreadGrid g = tread_grid(r.tread_points, r.half_model);
+  const TreadWindow w = patch_window(g, s.normal, kPatchMarginPoints);
+  return {std::move(g), w};
 }
 
 double qy(const RollingResult& r, const RollingStateResult& s, int n) {
@@ -239,9 +169,7 @@ Plot slip_sweep_plot(const RollingResult& r) {
 }
 
 CsvTable rolling_tread_table(const RollingResult& r, const RollingStateResult& s) {
-  check_state(r, s);
-  const TreadGrid g = tread_grid(r);
-  const Window w = patch_window(g, s.normal, kPatchMarginPoints);
+  const auto [g, w] = state_grid(r, s);
   CsvTable t;
   t.comments = {
       fmt::format("tirefem: tread points of '{}', state {}", r.name, state_label(s)),
@@ -268,18 +196,13 @@ CsvTable rolling_tread_table(const RollingResult& r, const RollingStateResult& s
 }
 
 HeatMap traction_map_s_phi(const RollingResult& r, const RollingStateResult& s) {
-  check_state(r, s);
-  const TreadGrid g = tread_grid(r);
-  const Window w = patch_window(g, s.normal, kPatchMarginPoints);
+  const auto [g, w] = state_grid(r, s);
   HeatMap m;
-  m.title = fmt::format("{}, {}: tangential stress qy at δz = {:.2f} mm ({}, μ = {:g})", r.name,
-                        state_label(s), r.deflection_mm, support_label(r.support), r.friction);
-  m.x_label = "s from the equator [mm]";
-  m.y_label = "φ [deg]";
+  m.title = fmt::format("{} {}: tangential stress, {}, μ = {:g}", r.name, state_label(s),
+                        support_label(r.support), r.friction);
+  set_s_phi_axes(m, g, w);
   m.value_label = "tangential stress qy (y component) [MPa]";
   PlotSeries slip{"slip", {}, {}, "points pt 7 ps 0.4 lc rgb '#000000'"};
-  for (int i = w.i0; i <= w.i1; ++i) m.x.push_back(g.u[i]);
-  for (int j = w.j0; j <= w.j1; ++j) m.y.push_back(g.v[j] * kDeg);
   for (int j = w.j0; j <= w.j1; ++j) {
     std::vector<double> row;
     for (int i = w.i0; i <= w.i1; ++i) {
