@@ -175,17 +175,22 @@ class RollingModel {
     Eigen::VectorXd u;
   };
 
-  // Solves with the given law at Rk, from the nearest converged Coulomb state (predicted), with halving
-  // continuation in 1/Rk (Coulomb, full stick) or in μ (full slip) from that state when a solve fails.
+  // Solves with the given law at Rk. Coulomb and full stick: from the nearest converged Coulomb state
+  // (predicted), with halving continuation in 1/Rk from it when a solve fails. Full slip: from the static
+  // footprint (μ = 0 of this law), continued in μ with a secant predictor; the whole friction force at
+  // once is tried first.
   Solved solve(const FrictionLaw& law, double rolling_radius) {
     const auto t0 = Clock::now();
     const int factorizations0 = newton_->linear_stats().factorizations;
     const int newton0 = newton_->total_iterations();
     Solved s;
+    const bool full_slip = law.mode == FrictionLaw::Mode::full_slip;
     const double target = 1.0 / rolling_radius;
-    const Known* from = nearest(target);
+    const Known* from = full_slip ? nullptr : nearest(target);
     double done = 0.0, step = 1.0;  // continuation parameter from the start state (0) to the target (1)
     Eigen::VectorXd u = from ? from->u : base_;
+    Eigen::VectorXd previous_u = u;  // full slip: the converged stage before u, at previous_t
+    double previous_t = 0.0;
     const double p0 = from ? from->inverse_radius : target;
     int cutbacks = 0;
     ContactSolveOutcome last;
@@ -193,11 +198,13 @@ class RollingModel {
       const double t = std::min(1.0, done + step);
       FrictionLaw stage = law;
       double p = target;
-      if (law.mode == FrictionLaw::Mode::full_slip) stage.friction = law.friction * t;
+      if (full_slip) stage.friction = law.friction * t;
       else p = p0 + t * (target - p0);
       friction_->set_law(stage);
       friction_->set_rolling_radius(1.0 / p);
-      Eigen::VectorXd trial = law.mode == FrictionLaw::Mode::coulomb ? predict(p, u) : u;
+      Eigen::VectorXd trial = u;
+      if (law.mode == FrictionLaw::Mode::coulomb) trial = predict(p, u);
+      else if (full_slip && done > previous_t) trial += (t - done) / (done - previous_t) * (u - previous_u);
       last = solve_rolling_state(*newton_, *contact_, *friction_, trial, settings_);
       ++s.counts.solves;
       if (last.converged && friction_->contact_outside_window(trial) > 0) {
@@ -213,6 +220,8 @@ class RollingModel {
         step *= 0.5;
         continue;
       }
+      previous_u = std::move(u);
+      previous_t = done;
       u = std::move(trial);
       done = t;
       if (law.mode == FrictionLaw::Mode::coulomb) known_.push_back({p, u});

@@ -116,6 +116,8 @@ double SparseDirectSolver::factorize_shifted(const SparseMatrix& matrix) {
 }
 
 namespace {
+constexpr double kMaxTrueResidual = 0.1;  // of a preconditioned GMRES solution, relative to the rhs
+
 // Eigen preconditioner interface over a factorisation made elsewhere: compute() does nothing.
 class FactorizationPreconditioner {
  public:
@@ -147,7 +149,10 @@ bool SparseDirectSolver::solve_preconditioned(const SparseMatrix& matrix, const 
   gmres.setTolerance(tolerance);
   gmres.compute(matrix);
   x = gmres.solve(rhs);
-  const bool ok = gmres.info() == Eigen::Success && x.allFinite();
+  // GMRES measures the preconditioned residual; a preconditioner from a very different matrix can make
+  // that small while the true one is not: accept a step only if it also reduces the true residual well.
+  const bool ok = gmres.info() == Eigen::Success && x.allFinite() &&
+                  (rhs - matrix * x).norm() <= kMaxTrueResidual * rhs.norm();
   stats_.krylov_iterations += static_cast<int>(gmres.iterations());
   ++(ok ? stats_.krylov_solves : stats_.krylov_failures);
   stats_.krylov_s += seconds_since(t0);

@@ -18,6 +18,7 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
   double increment_norm = 0.0;
   double first_residual = -1.0;
   double energy = 0.0, first_energy = 0.0;  // |Δu·R| of the last and of the first iteration
+  double previous_residual = 0.0;
   for (int it = 0;; ++it) {
     problem_.evaluate(u, load_factor, true);
     const Eigen::VectorXd r = dofs.gather(problem_.system().residual());
@@ -37,7 +38,11 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
     if (it >= settings_.max_iterations) return out;
     if (it >= 3 && rn > 1e4 * first_residual) return out;  // diverging
     Eigen::VectorXd du;
-    if (!solve_linear(-r, du)) return out;
+    // A step from a reused factorisation that made the residual grow was too inexact for this
+    // nonlinearity (e.g. the preconditioner came from a very different state): factorise afresh.
+    const bool fresh = it > 0 && rn > previous_residual;
+    previous_residual = rn;
+    if (!solve_linear(-r, du, fresh)) return out;
     // Line search: far from the solution (an unstressed membrane under follower pressure) a full
     // Newton step can overshoot by orders of magnitude; halve it while the residual grows.
     for (int halving = 0; halving < settings_.max_line_search_halvings; ++halving) {
@@ -57,10 +62,10 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
   }
 }
 
-bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du) {
+bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du, bool fresh) {
   const SparseMatrix& tangent = problem_.system().tangent();
   try {
-    if (!settings_.reuse_factorization) {
+    if (!settings_.reuse_factorization || (fresh && linear_.uses_lu())) {
       linear_.factorize(tangent);
       du = linear_.solve(rhs);
       return du.allFinite();

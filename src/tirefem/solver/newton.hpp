@@ -50,7 +50,8 @@ class NewtonSolver {
   void set_max_iterations(int iterations) { settings_.max_iterations = iterations; }
 
  private:
-  bool solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du);
+  // `fresh`: factorise the current tangent even if a reused factorisation would do.
+  bool solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du, bool fresh);
 
   NonlinearProblem& problem_;
   NewtonSettings settings_;
