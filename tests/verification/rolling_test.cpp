@@ -43,6 +43,7 @@ RollingStateSpec state(RollingStateSpec::Kind kind, double slip = 0.0, bool brak
 RollingStudy study(bool reverse) {
   RollingStudy s;
   s.name = reverse ? "reverse" : "forward";
+  if (reverse) s.reverse = true;
   s.target_load = 3000.0;
   s.friction = 0.7;
   s.reverse = reverse;
@@ -63,13 +64,27 @@ ContactSettings settings() {
   return s;
 }
 
-const RollingResult& run(bool reverse) {
-  static std::map<bool, RollingResult> cache;
-  auto it = cache.find(reverse);
+// The drum (1830 mm) with fewer states: free rolling, traction, full slip.
+RollingStudy drum_study() {
+  RollingStudy s;
+  s.name = "drum";
+  s.support = drum_support(1830.0);
+  s.target_load = 3000.0;
+  using K = RollingStateSpec::Kind;
+  s.states = {state(K::free), state(K::given_slip, 0.02), state(K::full_slip)};
+  return s;
+}
+
+enum class Run { forward, reverse, drum };
+
+const RollingResult& run(Run which) {
+  static std::map<Run, RollingResult> cache;
+  auto it = cache.find(which);
   if (it == cache.end()) {
     const Stopwatch clock;
     const Case& c = example_case();
-    it = cache.emplace(reverse, run_rolling(coarse_tyre(), c.tyre, c.inflation, settings(), study(reverse))).first;
+    const RollingStudy s = which == Run::drum ? drum_study() : study(which == Run::reverse);
+    it = cache.emplace(which, run_rolling(coarse_tyre(), c.tyre, c.inflation, settings(), s)).first;
     std::printf("  rolling study '%s' on 40 x 12: %.1f s, %d factorisations, %d Newton iterations\n",
                 it->second.name.c_str(), clock.seconds(), it->second.counters.factorizations,
                 it->second.counters.newton_iterations);
@@ -83,7 +98,7 @@ const RollingStateResult& nth(const RollingResult& r, int i) {
 }
 
 TEST(Rolling, StudyCompletes) {
-  const RollingResult& r = run(false);
+  const RollingResult& r = run(Run::forward);
   ASSERT_TRUE(r.completed) << r.failure;
   ASSERT_TRUE(r.effective_rolling_radius_mm.has_value());
   std::printf("  Re %.3f mm, Rd %.3f mm, free radius %.3f mm, slip stiffness %.0f N\n", *r.effective_rolling_radius_mm,
@@ -95,7 +110,7 @@ TEST(Rolling, StudyCompletes) {
 }
 
 TEST(Rolling, FreeRollingHasNoLongitudinalForce) {
-  const RollingStateResult& s = nth(run(false), 0);
+  const RollingStateResult& s = nth(run(Run::forward), 0);
   std::printf("  free rolling: Qy %.4f N, Qz %.1f N, stick %.3f\n", s.figures.Qy_N, s.figures.Qz_N,
               s.figures.stick_area_fraction);
   EXPECT_LT(std::abs(s.figures.Qy_N), 1e-3 * s.figures.Qz_N);
@@ -103,7 +118,7 @@ TEST(Rolling, FreeRollingHasNoLongitudinalForce) {
 }
 
 TEST(Rolling, FullSlipGivesMuTimesQz) {
-  const RollingResult& r = run(false);
+  const RollingResult& r = run(Run::forward);
   for (int i : {4, 5}) {
     const RollingStateResult& s = nth(r, i);
     const double ratio = s.figures.Qy_N / (r.friction * s.figures.Qz_N);
@@ -116,7 +131,7 @@ TEST(Rolling, FullSlipGivesMuTimesQz) {
 }
 
 TEST(Rolling, FullStickHasNoSlipPoint) {
-  const RollingStateResult& s = nth(run(false), 3);
+  const RollingStateResult& s = nth(run(Run::forward), 3);
   int slip = 0, stick = 0;
   for (const TreadTraction& t : s.tangential) slip += t.status == TreadContact::slip, stick += t.status == TreadContact::stick;
   std::printf("  full stick at κ = 0.01: %d stick points, %d slip points, Qy %.1f N\n", stick, slip, s.figures.Qy_N);
@@ -129,7 +144,7 @@ TEST(Rolling, FullStickHasNoSlipPoint) {
 }
 
 TEST(Rolling, TractionAndBrakingAreOppositeAndGrowWithSlip) {
-  const RollingResult& r = run(false);
+  const RollingResult& r = run(Run::forward);
   const RollingStateResult &drive = nth(r, 1), &brake = nth(r, 2), &more = nth(r, 6);
   std::printf("  κ = +0.02: Qy %.1f N, stick %.2f; κ = −0.02: Qy %.1f N, stick %.2f; κ = 0.05: Qy %.1f N, stick %.2f\n",
               drive.figures.Qy_N, drive.figures.stick_area_fraction, brake.figures.Qy_N,
@@ -173,9 +188,8 @@ RimReaction rim_reaction(const TyreMesh& tm, double pressure, const Eigen::Vecto
   return out;
 }
 
-TEST(Rolling, AxleLoadsBalanceTheContactStresses) {
-  const RollingResult& r = run(false);
-  for (int i : {1, 4, 6}) {
+void check_axle_loads(const RollingResult& r, std::initializer_list<int> states) {
+  for (int i : states) {
     const RollingStateResult& s = nth(r, i);
     const RimReaction rim = rim_reaction(coarse_tyre(), example_case().inflation.pressure, s.displacement);
     // Half model: the rim reaction of half the tyre, doubled; contact + rim = 0.
@@ -202,8 +216,40 @@ TEST(Rolling, AxleLoadsBalanceTheContactStresses) {
   }
 }
 
+TEST(Rolling, AxleLoadsBalanceTheContactStresses) { check_axle_loads(run(Run::forward), {1, 4, 6}); }
+
+// The drum: the same statics; free rolling; traction; full slip. The friction force follows the drum
+// surface, so on the drum μ relates the tangential to the normal force point by point (Σ|Ft| = μ Σ|Fn|
+// to round-off), not Qy to Qz: the normals over the patch tilt by ±θ about the drum axis, and under full
+// slip the pressure centroid moves off the top, which tilts the resultant by ε(1 + μ²)/μ (ε = Σ Fn,y /
+// Σ Fn,z): printed, not checked against μ.
+TEST(Rolling, DrumRollingBalancesAndSlides) {
+  const RollingResult& r = run(Run::drum);
+  ASSERT_TRUE(r.completed) << r.failure;
+  check_axle_loads(r, {1, 2});
+  const RollingStateResult &free = nth(r, 0), &drive = nth(r, 1), &slide = nth(r, 2);
+  std::printf("  drum: Re %.3f mm, free Qy %.4f N, κ = 0.02: Qy %.1f N (stick %.2f), full slip Qy/(μQz) %.5f\n",
+              *r.effective_rolling_radius_mm, free.figures.Qy_N, drive.figures.Qy_N,
+              drive.figures.stick_area_fraction, slide.figures.Qy_N / (r.friction * slide.figures.Qz_N));
+  EXPECT_LT(std::abs(free.figures.Qy_N), 1e-3 * free.figures.Qz_N);
+  EXPECT_GT(drive.figures.Qy_N, 0.0);
+  double tangential = 0.0, normal = 0.0;
+  Eigen::Vector3d normal_force = Eigen::Vector3d::Zero();
+  for (std::size_t q = 0; q < r.tread_points.size(); ++q) {
+    tangential += slide.tangential[q].force.norm();
+    normal += slide.normal[q].force.norm();
+    normal_force += slide.normal[q].force;
+  }
+  const double tilt = normal_force.y() / normal_force.z();
+  std::printf("  drum full slip: Σ|Ft| / (μ Σ|Fn|) = %.12f; pressure-centroid tilt ε = %.4f, "
+              "ε(1 + μ²)/μ = %.4f\n", tangential / (r.friction * normal), tilt,
+              tilt * (1 + r.friction * r.friction) / r.friction);
+  EXPECT_NEAR(tangential / (r.friction * normal), 1.0, 1e-9);
+  EXPECT_EQ(slide.figures.stick_area_fraction, 0.0);
+}
+
 TEST(Rolling, ReversedTravelMirrorsTheSolution) {
-  const RollingResult &fwd = run(false), &rev = run(true);
+  const RollingResult &fwd = run(Run::forward), &rev = run(Run::reverse);
   ASSERT_TRUE(rev.completed) << rev.failure;
   EXPECT_NEAR(*rev.effective_rolling_radius_mm, *fwd.effective_rolling_radius_mm, 1e-6);
   // Tread points of φ and −φ: same (s, |φ|) key.
