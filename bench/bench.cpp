@@ -55,7 +55,8 @@ int rolling_benchmark(const std::string& file) {
   state.kind = RollingStateSpec::Kind::given_slip;
   state.slip = 0.02;
   study.states = {RollingStateSpec{}, state};  // free rolling (its counts), then the state
-  study.sweep = SlipSweep{-0.15, 0.15, 15};
+  const bool hold_load = study.sweep && study.sweep->hold_load;
+  study.sweep = SlipSweep{-0.15, 0.15, 15, hold_load};
   fmt::print("tirefem rolling benchmark: {} ({} threads), {} x {} mesh, {} DOF (free {}), μ = {}\n", c.title,
              omp_get_max_threads(), mesh.circumferential_elements, mesh.meridional_elements, tm.mesh.dof_count(),
              tm.mesh.dof_count() - static_cast<int>(tm.fixed_dofs.size()), study.friction);

@@ -159,7 +159,7 @@ TEST(CaseReaderRolling, UnknownKeysSayDidYouMean) {
   EXPECT_CONTAINS(error_of(rolling_with("theory = \"linear\"")), "rolling[0].theory: unknown key");
   text = rolling_with("sweep = { from = 0.0, point = 3 }");
   EXPECT_EQ(error_of(text), where(text, "point =") +
-                                "rolling[0].sweep.point: unknown key; expected one of: from, to, points (did "
+                                "rolling[0].sweep.point: unknown key; expected one of: from, to, points, hold (did "
                                 "you mean 'points'?)");
   text = state("{ state = \"given_slip\", slipp = 0.1 }");
   EXPECT_EQ(error_of(text), where(text, "slipp") +
@@ -445,6 +445,20 @@ TEST(CaseReaderRollingMesh, OwnMeshInheritsTheCaseMesh) {
                   "rolling[0].mesh.circumferential_elements: must be ≥ 3 (got 2)");
   EXPECT_CONTAINS(error_of(rolling_with("mesh = { circumferential_element = 2 }")),
                   "rolling[0].mesh.circumferential_element: unknown key");
+}
+}  // namespace
+}  // namespace tirefem
+
+namespace tirefem {
+namespace {
+TEST(CaseReaderRollingSweep, HoldIsDeflectionOrLoad) {
+  EXPECT_FALSE(parse_case(rolling_with("sweep = { points = 3 }"), "case.toml").rolling[0].sweep->hold_load);
+  EXPECT_TRUE(parse_case(rolling_with("sweep = { points = 3, hold = \"load\" }"), "case.toml").rolling[0].sweep->hold_load);
+  EXPECT_FALSE(
+      parse_case(rolling_with("sweep = { hold = \"deflection\" }"), "case.toml").rolling[0].sweep->hold_load);
+  const std::string e = error_of(rolling_with("sweep = { hold = \"axle\" }"));
+  EXPECT_NE(e.find("rolling[0].sweep.hold"), std::string::npos) << e;
+  EXPECT_NE(e.find("load"), std::string::npos) << e;
 }
 }  // namespace
 }  // namespace tirefem

@@ -147,14 +147,15 @@ TEST(RollingReport, StatesTableMarksUndefinedAndFailedValuesNaN) {
 TEST(RollingReport, SweepTableAndPlot) {
   const RollingResult r = rolling();
   const CsvTable t = slip_sweep_table(r);
-  EXPECT_EQ(t.columns, (std::vector<std::string>{"slip", "rolling_radius_mm", "Qz_N", "Qy_N", "Mx_Nmm",
-                                                 "Qy_over_Qz", "stick_area_fraction", "contact_iterations",
+  EXPECT_EQ(t.columns, (std::vector<std::string>{"slip", "rolling_radius_mm", "deflection_mm", "Qz_N", "Qy_N",
+                                                 "Mx_Nmm", "Qy_over_Qz", "stick_area_fraction", "contact_iterations",
                                                  "newton_iterations", "factorizations", "time_s"}));
   ASSERT_EQ(t.rows.size(), 3u);
   EXPECT_EQ(t.rows[0][0], -0.02);
-  EXPECT_DOUBLE_EQ(t.rows[0][5], -1000.0 / 3700.0);
-  EXPECT_TRUE(std::isnan(t.rows[2][5]));  // Qz = 0
-  EXPECT_EQ(t.rows[1][8], 6.0);
+  EXPECT_EQ(t.rows[0][2], r.sweep[0].deflection_mm);
+  EXPECT_DOUBLE_EQ(t.rows[0][6], -1000.0 / 3700.0);
+  EXPECT_TRUE(std::isnan(t.rows[2][6]));  // Qz = 0
+  EXPECT_EQ(t.rows[1][9], 6.0);
 
   const Plot p = slip_sweep_plot(r);
   ASSERT_EQ(p.series.size(), 2u);

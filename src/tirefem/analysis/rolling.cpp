@@ -161,8 +161,7 @@ class RollingModel {
     // 15-point sweep: 12 iterations before refactorising → 28 LUs, 41 s; 25 → 4 LUs, 31 s; 40 → 65 s.
     ns.max_krylov_iterations = 25;
     newton_ = std::make_unique<NewtonSolver>(*problem_, ns);
-    contact_->set_deflection(fp.final_state.deflection_mm);
-    friction_->set_deflection(fp.final_state.deflection_mm);
+    set_deflection(fp.final_state.deflection_mm);
     base_ = fp.final_state.displacement;
     result.tread_points = contact_->points();
   }
@@ -238,6 +237,45 @@ class RollingModel {
     return s;
   }
 
+  // Holds Qz at `target` by moving the support (δz): secant steps from the static vertical stiffness,
+  // each a rolling solve from the last state, until |Qz − target| ≤ tolerance · target. Leaves the model
+  // at the new deflection.
+  void hold_load(Solved& s, double target, double tolerance, double stiffness) {
+    const auto t0 = Clock::now();
+    const int factorizations0 = newton_->linear_stats().factorizations;
+    const int newton0 = newton_->total_iterations();
+    double d0 = deflection_, q0 = s.figures.Qz_N, slope = stiffness;
+    for (int it = 0; it < 8 && s.converged && std::abs(q0 - target) > tolerance * target; ++it) {
+      const double d1 = d0 + (target - q0) / slope;
+      set_deflection(d1);
+      Eigen::VectorXd u = s.u;
+      const ContactSolveOutcome o = solve_rolling_state(*newton_, *contact_, *friction_, u, settings_);
+      ++s.counts.solves;
+      if (!o.converged) {
+        s.converged = false;
+        s.failure = "holding Qz: " + o.failure;
+        break;
+      }
+      s.u = std::move(u);
+      s.figures = figures(s.u);
+      if (s.figures.Qz_N != q0) slope = (s.figures.Qz_N - q0) / (d1 - d0);
+      d0 = d1, q0 = s.figures.Qz_N;
+    }
+    if (s.converged && std::abs(q0 - target) > tolerance * target) {
+      s.converged = false;
+      s.failure = fmt::format("Qz = {} N not held within 8 deflection steps (Qz {:.1f} N)", target, q0);
+    }
+    s.counts.newton_iterations += newton_->total_iterations() - newton0;
+    s.counts.factorizations += newton_->linear_stats().factorizations - factorizations0;
+    s.counts.time_s += seconds_since(t0);
+  }
+  void set_deflection(double deflection) {
+    deflection_ = deflection;
+    contact_->set_deflection(deflection);
+    friction_->set_deflection(deflection);
+  }
+  double deflection() const { return deflection_; }
+
   RollingFigures figures(const Eigen::VectorXd& u) const {
     return rolling_figures(contact_->points(), contact_->evaluate(u), friction_->evaluate(u), tm_.axis_z,
                            tm_.half_model, result_.reverse);
@@ -296,6 +334,7 @@ class RollingModel {
   std::unique_ptr<NonlinearProblem> problem_;
   std::unique_ptr<NewtonSolver> newton_;
   Eigen::VectorXd base_;  // the static footprint
+  double deflection_ = 0.0;
   std::vector<Known> known_;
 };
 
@@ -471,17 +510,25 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
     std::reverse(down.begin(), down.end());
     FrictionLaw law;
     law.friction = study.friction;
+    // Vertical stiffness dQz/dδz of the last two static load points: the first step when holding Qz.
+    const auto& lp = r.footprint.points;
+    const double stiffness = lp.size() >= 2 ? (lp.back().patch.Qz_N - lp[lp.size() - 2].patch.Qz_N) /
+                                                  (lp.back().deflection_mm - lp[lp.size() - 2].deflection_mm)
+                                            : r.footprint.points.back().patch.Qz_N / r.deflection_mm;
     for (const auto* side : {&up, &down}) {
+      model.set_deflection(r.deflection_mm);  // each side starts from free rolling
       for (double k : *side) {
         const double rk = re / (1.0 + k);
-        const RollingModel::Solved s = model.solve(law, rk);
+        RollingModel::Solved s = model.solve(law, rk);
+        if (sw.hold_load && s.converged)
+          model.hold_load(s, study.target_load, study.load_tolerance, stiffness);
         if (!s.converged) {
           ok = false;
           if (r.failure.empty()) r.failure = fmt::format("slip sweep at κ = {:g}: {}", k, s.failure);
           if (progress) progress(fmt::format("  sweep κ {:+.4f}: did not converge: {}", k, s.failure));
           break;  // the rest of this side would start from further away
         }
-        r.sweep.push_back({k, rk, s.figures, s.counts});
+        r.sweep.push_back({k, rk, model.deflection(), s.figures, s.counts});
         if (progress)
           progress(fmt::format("  sweep κ {:+.4f}: Qy {:+8.1f} N, Qz {:.1f} N, stick {:3.0f}% ({} Newton "
                                "iterations, {:.2f} s)", k, s.figures.Qy_N, s.figures.Qz_N,

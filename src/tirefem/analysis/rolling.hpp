@@ -64,6 +64,7 @@ struct RollingStateResult {
 struct SweepPoint {
   double slip = 0.0;
   double rolling_radius_mm = 0.0;
+  double deflection_mm = 0.0;  // δz: the footprint's, or adjusted to hold Qz (SlipSweep::hold_load)
   RollingFigures figures;
   RollingSolveCounts counts;
 };

@@ -142,11 +142,14 @@ struct RollingStateSpec {
   bool braking = false;         // full_slip: locked wheel (true) or spinning wheel (false)
 };
 
-// The longitudinal force–slip curve Qy(κ): `points` slips evenly from `from` to `to`.
+// The longitudinal force–slip curve Qy(κ): `points` slips evenly from `from` to `to`, at the footprint's
+// deflection (the paper's fixed axle; Qz drifts a little with the slip) or, with hold_load, with the
+// deflection of each point adjusted so that Qz stays at the study's target load.
 struct SlipSweep {
   double from = -0.1;
   double to = 0.1;
   int points = 15;
+  bool hold_load = false;
 };
 
 // Steady slow rolling at the deflection of a footprint: the footprint at target_load is found first

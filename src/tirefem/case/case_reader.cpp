@@ -790,7 +790,8 @@ class Reader {
   //                                "full_slip",    wheel = "spinning" (default) or "locked"
   //                              name: [A-Za-z0-9_.+-], unique in the study; default "free", "slip_0.05",
   //                              "radius_280", "full_stick", "full_slip_spinning" / "full_slip_locked"
-  //   sweep                      { from = -0.1, to = 0.1, points = 15 }: Qy(κ) at `points` (2..200) slips
+  //   sweep                      { from = -0.1, to = 0.1, points = 15, hold = "deflection" | "load" }:
+  //                              Qy(κ) at `points` (2..200) slips, at the footprint's deflection or at its load
   //                              evenly in [from, to], −1 < from < to ≤ 10
   // At least one state or a sweep.
   // [mesh], or a study's own mesh table (keys missing there are the case's).
@@ -821,11 +822,13 @@ class Reader {
     }
     if (const toml::node* v = get(t, path, "sweep")) {
       const std::string sp = join(path, "sweep");
-      const toml::table& w = table(*v, sp, {"from", "to", "points"});
+      const toml::table& w = table(*v, sp, {"from", "to", "points", "hold"});
       SlipSweep sw;
       opt_number(w, sp, "from", sw.from, " (slip κ)");
       opt_number(w, sp, "to", sw.to, " (slip κ)");
       opt_integer(w, sp, "points", sw.points);
+      if (const toml::node* h = get(w, sp, "hold"))
+        sw.hold_load = choice(*h, join(sp, "hold"), {"deflection", "load"}) == 1;
       s.sweep = sw;
     }
     return s;

@@ -137,11 +137,11 @@ CsvTable slip_sweep_table(const RollingResult& r) {
   t.comments = {
       fmt::format("tirefem: longitudinal force-slip sweep of '{}' (converged points, by slip)", r.name)};
   for (const std::string& c : study_comments(r)) t.comments.push_back(c);
-  t.columns = {"slip", "rolling_radius_mm", "Qz_N", "Qy_N", "Mx_Nmm", "Qy_over_Qz", "stick_area_fraction",
-               "contact_iterations", "newton_iterations", "factorizations", "time_s"};
+  t.columns = {"slip", "rolling_radius_mm", "deflection_mm", "Qz_N", "Qy_N", "Mx_Nmm", "Qy_over_Qz",
+               "stick_area_fraction", "contact_iterations", "newton_iterations", "factorizations", "time_s"};
   for (const SweepPoint& p : r.sweep) {
     const RollingFigures& f = p.figures;
-    t.rows.push_back({p.slip, p.rolling_radius_mm, f.Qz_N, f.Qy_N, f.Mx_Nmm,
+    t.rows.push_back({p.slip, p.rolling_radius_mm, p.deflection_mm, f.Qz_N, f.Qy_N, f.Mx_Nmm,
                       f.Qz_N != 0.0 ? f.Qy_N / f.Qz_N : kNaN, f.stick_area_fraction,
                       static_cast<double>(p.counts.contact_iterations),
                       static_cast<double>(p.counts.newton_iterations),
@@ -280,6 +280,7 @@ toml::table rolling_summary(const RollingResult& r) {
       toml::table pt;
       pt.insert("slip", p.slip);
       pt.insert("rolling_radius_mm", p.rolling_radius_mm);
+      pt.insert("deflection_mm", p.deflection_mm);
       insert_figures(pt, p.figures);
       pt.insert("newton_iterations", p.counts.newton_iterations);
       pt.insert("factorizations", p.counts.factorizations);
