@@ -76,7 +76,7 @@ int rolling_benchmark(const std::string& file) {
   if (!r.states.empty()) print_rolling_counts("free rolling (secant on Rk)", r.states.front().counts);
   for (std::size_t i = 1; i < r.states.size(); ++i)
     print_rolling_counts(fmt::format("one state, κ = {:g}", r.states[i].spec.slip), r.states[i].counts);
-  print_rolling_counts(fmt::format("slip sweep, {} points", r.sweep.size()), sweep);
+  print_rolling_counts(fmt::format("slip sweep, {} points{}", r.sweep.size(), hold_load ? ", Qz held" : ""), sweep);
   fmt::print("total                        {:.3f} s\n",
              std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   return r.completed ? 0 : 1;
