@@ -12,99 +12,6 @@
 
 namespace tirefem {
 
-RollingFigures rolling_figures(const std::vector<TreadPoint>& points, const std::vector<TreadPointState>& normal,
-                               const std::vector<TreadTraction>& tangential, double axle_z, bool half_model,
-                               bool reverse) {
-  RollingFigures f;
-  double stick_area = 0.0, moment = 0.0;
-  for (std::size_t q = 0; q < points.size(); ++q) {
-    const Eigen::Vector3d force = normal[q].force + tangential[q].force;
-    const Eigen::Vector3d& x = normal[q].position;
-    f.force_N += force;
-    moment += x.y() * force.z() - (x.z() - axle_z) * force.y();  // (r − r_axle) × F, x component
-    if (normal[q].pressure > 0) {
-      f.contact_area_mm2 += points[q].weight;
-      if (tangential[q].status == TreadContact::stick) stick_area += points[q].weight;
-    }
-    if (tangential[q].status != TreadContact::out)
-      f.max_traction_MPa = std::max(f.max_traction_MPa, std::abs(tangential[q].traction));
-  }
-  f.stick_area_fraction = f.contact_area_mm2 > 0 ? stick_area / f.contact_area_mm2 : 0.0;
-  if (half_model) {  // the mirror image in x = 0 doubles all but the lateral force
-    f.force_N *= 2.0;
-    f.force_N.x() = 0.0;
-    moment *= 2.0;
-    f.contact_area_mm2 *= 2.0;
-  }
-  // A reversed study is the mirror image (y → −y) of a forward one: report its figures in that frame.
-  const double sign = reverse ? -1.0 : 1.0;
-  f.Qz_N = f.force_N.z();
-  f.Qy_N = sign * f.force_N.y();
-  f.Mx_Nmm = sign * moment;
-  return f;
-}
-
-namespace {
-constexpr int kSingleLoopIterations = 12;
-
-int count_plan_changes(const FrictionPlan& a, const FrictionPlan& b) {
-  int n = 0;
-  for (std::size_t k = 0; k < a.size(); ++k) n += a[k].status != b[k].status || a[k].sign != b[k].sign;
-  return n;
-}
-int count_changes(const std::vector<char>& a, const std::vector<char>& b) {
-  int n = 0;
-  for (std::size_t k = 0; k < a.size(); ++k) n += (a[k] != 0) != (b[k] != 0);
-  return n;
-}
-
-// The two-level loop with the contact region (eq. 5) and the stick/slip plan (eq. 15) frozen and revised
-// together (MODEL.md §5).
-ContactSolveOutcome two_level(NewtonSolver& newton, WinklerContactForm& contact, TreadFrictionForm& friction,
-                              Eigen::VectorXd& u, const ContactSettings& settings) {
-  std::vector<char> region;
-  FrictionPlan plan;
-  const auto freeze = [&](const Eigen::VectorXd& v) {
-    if (region.empty()) region = contact.region(v), plan = friction.plan(v, region);
-    contact.freeze_region(region);
-    friction.freeze_plan(plan);
-  };
-  const auto revise = [&](const Eigen::VectorXd& v) {
-    std::vector<char> revised_region = contact.region(v);
-    FrictionPlan revised_plan = friction.plan(v, revised_region);
-    const int changes = count_changes(region, revised_region) + count_plan_changes(plan, revised_plan);
-    region = std::move(revised_region);
-    plan = std::move(revised_plan);
-    return changes;
-  };
-  ContactSolveOutcome out = two_level_iteration(newton, u, settings, freeze, revise);
-  contact.release_region();
-  friction.release_plan();
-  return out;
-}
-}  // namespace
-
-ContactSolveOutcome solve_rolling_state(NewtonSolver& newton, WinklerContactForm& contact,
-                                        TreadFrictionForm& friction, Eigen::VectorXd& u,
-                                        const ContactSettings& settings) {
-  if (settings.iteration == ContactSettings::Iteration::two_level)
-    return two_level(newton, contact, friction, u, settings);
-  const Eigen::VectorXd start = u;
-  contact.release_region();
-  friction.release_plan();
-  // Near a stick/slip boundary the plan may cycle between iterates: after a few single-loop iterations
-  // the two-level loop takes over from the last iterate (from the start if that one went astray).
-  const int max_iterations = newton.max_iterations();
-  newton.set_max_iterations(std::min(max_iterations, kSingleLoopIterations));
-  const NewtonOutcome n = newton.solve(u, 1.0);
-  newton.set_max_iterations(max_iterations);
-  if (n.converged) return {true, 1, n.iterations, 0, {}};
-  if (!u.allFinite() || !(n.relative_residual < 1.0)) u = start;
-  ContactSolveOutcome out = two_level(newton, contact, friction, u, settings);
-  out.newton_iterations += n.iterations;
-  return out;
-}
-
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -409,7 +316,6 @@ RollingStateResult free_rolling(RollingModel& model, const RollingStudy& study, 
 
 RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const InflationSettings& inflation,
                           const ContactSettings& contact, const RollingStudy& study, const ProgressSink& progress) {
-  const auto t0 = Clock::now();
   RollingResult r;
   r.name = study.name;
   r.support = study.support;
@@ -540,7 +446,6 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
   r.completed = ok;
   model.finish(r.counters);
   r.counters.wall_s = seconds_since(t_rolling);
-  (void)t0;
   return r;
 }
 
