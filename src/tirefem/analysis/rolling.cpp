@@ -64,8 +64,8 @@ class RollingModel {
     // An unsymmetric LU costs about twice a Cholesky: reuse it as GMRES preconditioner while that
     // converges fast (the tangent changes little between iterations and neighbouring states).
     ns.reuse_factorization = true;
-    // A new LU costs about 15 GMRES iterations here (80 × 46: 0.37 s against 0.024 s); measured on the
-    // 15-point sweep: 12 iterations before refactorising → 28 LUs, 41 s; 25 → 4 LUs, 31 s; 40 → 65 s.
+    // GMRES gives up after 25 iterations (then a fresh LU); measured on the 15-point sweep before the
+    // refresh after 8 (NewtonSettings): 12 → 28 LUs, 41 s; 25 → 4 LUs, 31 s; 40 → 65 s.
     ns.max_krylov_iterations = 25;
     newton_ = std::make_unique<NewtonSolver>(*problem_, ns);
     set_deflection(fp.final_state.deflection_mm);

@@ -65,15 +65,19 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
 bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du, bool fresh) {
   const SparseMatrix& tangent = problem_.system().tangent();
   try {
-    if (!settings_.reuse_factorization || (fresh && linear_.uses_lu())) {
+    if (!settings_.reuse_factorization || ((fresh || refresh_) && linear_.uses_lu())) {
+      refresh_ = false;
       linear_.factorize(tangent);
       du = linear_.solve(rhs);
       return du.allFinite();
     }
     // Reuse the last factorisation as a preconditioner; refactorise when that no longer converges fast.
+    const int before = linear_.stats().krylov_iterations;
     if (linear_.solve_preconditioned(tangent, rhs, du, settings_.krylov_tolerance,
-                                     settings_.max_krylov_iterations))
+                                     settings_.max_krylov_iterations)) {
+      refresh_ = linear_.stats().krylov_iterations - before > settings_.refresh_after_krylov_iterations;
       return true;
+    }
     if (linear_.uses_lu()) {  // unsymmetric: a fresh LU of the current tangent
       linear_.factorize(tangent);
       du = linear_.solve(rhs);
