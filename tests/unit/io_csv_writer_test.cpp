@@ -8,25 +8,18 @@
 
 #include <gtest/gtest.h>
 
+#include "scratch_dir.hpp"
 #include "tirefem/io/csv_writer.hpp"
 
 namespace tirefem {
 namespace {
 namespace fs = std::filesystem;
 
-struct ScratchDir {
-  fs::path path = fs::temp_directory_path() / ("tirefem_io_csv_" + std::to_string(::getpid()));
-  ScratchDir() {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~ScratchDir() { fs::remove_all(path); }
+// A scratch folder of this file's own.
+struct ScratchDir : test::ScratchDir {
+  ScratchDir() : test::ScratchDir("io_csv") {}
 };
-
-std::string read_file(const fs::path& file) {
-  std::ifstream in(file);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using test::read_file;
 
 TEST(IoCsvWriter, WritesCommentsHeaderAndRows) {
   ScratchDir scratch;

@@ -6,27 +6,21 @@
 
 #include <gtest/gtest.h>
 
+#include "scratch_dir.hpp"
 #include "tirefem/io/results_folder.hpp"
 
 namespace tirefem {
 namespace {
 namespace fs = std::filesystem;
 
-struct ScratchDir {
-  fs::path path = fs::temp_directory_path() / ("tirefem_io_results_folder_" + std::to_string(::getpid()));
-  ScratchDir() {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~ScratchDir() { fs::remove_all(path); }
+// A scratch folder of this file's own.
+struct ScratchDir : test::ScratchDir {
+  ScratchDir() : test::ScratchDir("io_results_folder") {}
 };
+using test::read_file;
 
 void write_file(const fs::path& file, const std::string& text) { std::ofstream(file) << text; }
 
-std::string read_file(const fs::path& file) {
-  std::ifstream in(file);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 int entries_in(const fs::path& dir) {
   return static_cast<int>(std::distance(fs::directory_iterator(dir), fs::directory_iterator()));

@@ -9,25 +9,18 @@
 
 #include <gtest/gtest.h>
 
+#include "scratch_dir.hpp"
 #include "tirefem/io/vtu_writer.hpp"
 
 namespace tirefem {
 namespace {
 namespace fs = std::filesystem;
 
-struct ScratchDir {
-  fs::path path = fs::temp_directory_path() / ("tirefem_io_vtu_" + std::to_string(::getpid()));
-  ScratchDir() {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~ScratchDir() { fs::remove_all(path); }
+// A scratch folder of this file's own.
+struct ScratchDir : test::ScratchDir {
+  ScratchDir() : test::ScratchDir("io_vtu") {}
 };
-
-std::string read_file(const fs::path& file) {
-  std::ifstream in(file);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using test::read_file;
 
 // Whitespace-separated tokens of the first element whose opening tag contains `marker`.
 std::vector<std::string> element_tokens(const std::string& text, const std::string& marker) {
