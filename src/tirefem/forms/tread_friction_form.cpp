@@ -214,17 +214,22 @@ void TreadFrictionForm::assemble(const FormInput& input, SparseSystem& system) c
     }
     // Residual = −force on the tyre, spread over this point's element; tangent rows on this element,
     // columns on the elements of this point and of its anchor.
-    std::vector<int> dofs;
-    dofs.reserve(36);
-    append_outer_dofs(p.pairs, dofs);
+    // Up to three elements of 12 outer-face DOFs; no heap allocation in this loop.
+    std::array<int, 36> dofs{};
+    int m = 0;
+    const auto append = [&](const std::array<int, 4>& pairs) {
+      for (int a = 0; a < 4; ++a)
+        for (int c = 0; c < 3; ++c) dofs[m++] = outer_dof(pairs[a], c);
+    };
+    append(p.pairs);
     for (int o : other)
-      if (o >= 0) append_outer_dofs(points_[o].pairs, dofs);
-    const int m = static_cast<int>(dofs.size());
-    Eigen::VectorXd f = Eigen::VectorXd::Zero(m);
-    Eigen::MatrixXd tangent;
+      if (o >= 0) append(points_[o].pairs);
+    using Block = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, 36, 36>;
+    Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 36, 1> f = Eigen::VectorXd::Zero(m);
+    Block tangent;
     for (int a = 0; a < 4; ++a) f.segment<3>(3 * a) = -p.shape[a] * magnitude * t;
     if (input.with_tangent) {
-      tangent = Eigen::MatrixXd::Zero(m, m);
+      tangent = Block::Zero(m, m);
       const Eigen::Matrix3d self = -(t * d_self.transpose() + magnitude * dt);
       for (int a = 0; a < 4; ++a)
         for (int b = 0; b < 4; ++b) tangent.block<3, 3>(3 * a, 3 * b) += p.shape[a] * p.shape[b] * self;
@@ -241,7 +246,7 @@ void TreadFrictionForm::assemble(const FormInput& input, SparseSystem& system) c
     }
     const double* block = input.with_tangent ? tangent.data() : nullptr;
     const double* forces = f.data();
-    system.add(std::span<const int>(dofs), forces, block, input.with_tangent);
+    system.add(std::span<const int>(dofs.data(), m), forces, block, input.with_tangent);
   }
 }
 

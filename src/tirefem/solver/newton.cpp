@@ -64,25 +64,25 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
 
 bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du, bool fresh) {
   const SparseMatrix& tangent = problem_.system().tangent();
+  const auto direct = [&] {
+    linear_.factorize(tangent);
+    du = linear_.solve(rhs);
+    return du.allFinite();
+  };
   try {
-    if (!settings_.reuse_factorization || ((fresh || refresh_) && linear_.uses_lu())) {
+    const bool lu = linear_.uses_lu();
+    if (!settings_.reuse_factorization || (lu && (fresh || refresh_))) {
       refresh_ = false;
-      linear_.factorize(tangent);
-      du = linear_.solve(rhs);
-      return du.allFinite();
+      return direct();
     }
     // Reuse the last factorisation as a preconditioner; refactorise when that no longer converges fast.
     const int before = linear_.stats().krylov_iterations;
     if (linear_.solve_preconditioned(tangent, rhs, du, settings_.krylov_tolerance,
                                      settings_.max_krylov_iterations)) {
-      refresh_ = linear_.stats().krylov_iterations - before > settings_.refresh_after_krylov_iterations;
+      refresh_ = lu && linear_.stats().krylov_iterations - before > settings_.refresh_after_krylov_iterations;
       return true;
     }
-    if (linear_.uses_lu()) {  // unsymmetric: a fresh LU of the current tangent
-      linear_.factorize(tangent);
-      du = linear_.solve(rhs);
-      return du.allFinite();
-    }
+    if (lu) return direct();  // unsymmetric: a fresh LU of the current tangent
     if (linear_.factorize_shifted(tangent) == 0.0) {
       du = linear_.solve(rhs);
       return du.allFinite();
@@ -91,9 +91,7 @@ bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du,
     if (linear_.solve_preconditioned(tangent, rhs, du, settings_.krylov_tolerance,
                                      4 * settings_.max_krylov_iterations))
       return true;
-    linear_.factorize(tangent);
-    du = linear_.solve(rhs);
-    return du.allFinite();
+    return direct();
   } catch (const std::runtime_error&) {
     return false;
   }
