@@ -7,8 +7,10 @@
 
 #include "tirefem/analysis/run_case.hpp"
 #include "tirefem/case/case_reader.hpp"
+#include "tirefem/solver/blas_kernel.hpp"
 
 int main(int argc, char** argv) {
+  tirefem::use_fast_blas_kernel(argv);
   CLI::App app{"tirefem: finite-element contact of a car tyre with a road or a test drum"};
   app.require_subcommand(1);
   std::string case_file, out_dir = "results";

@@ -15,6 +15,7 @@
 #include "tirefem/analysis/rolling.hpp"
 #include "tirefem/case/case_reader.hpp"
 #include "tirefem/results/shell_results.hpp"
+#include "tirefem/solver/blas_kernel.hpp"
 
 namespace {
 
@@ -86,6 +87,10 @@ int rolling_benchmark(const std::string& file) {
 
 int main(int argc, char** argv) {
   using namespace tirefem;
+  use_fast_blas_kernel(argv);
+  const BlasKernel blas = blas_kernel();
+  fmt::print("BLAS: {}, kernel {}{}\n", blas.library, blas.core.empty() ? "unknown" : blas.core,
+             blas.forced ? " (set by OPENBLAS_CORETYPE)" : " (detected)");
   if (argc > 1 && std::string(argv[1]) == "rolling") {
     try {
       return rolling_benchmark(argc > 2 ? argv[2] : std::string(TIREFEM_SOURCE_DIR) + "/examples/175-70R13.toml");

@@ -227,9 +227,9 @@ TEST(FootprintReport, LoadCurveTableColumnsAndRows) {
   EXPECT_EQ(t.columns, (std::vector<std::string>{
                            "deflection_mm", "Qz_N", "contact_area_mm2", "patch_length_mm", "patch_width_mm",
                            "max_pressure_MPa", "mean_pressure_MPa", "contact_iterations", "newton_iterations",
-                           "factorizations", "increments", "time_s"}));
+                           "factorizations", "increments", "time_s", "tangent_shift"}));
   ASSERT_EQ(t.rows.size(), 3u);
-  EXPECT_EQ(t.rows[2], (std::vector<double>{4, 1500, 15000, 8, 4, 0.04, 0.02, 3, 7, 8, 1, 0.25}));
+  EXPECT_EQ(t.rows[2], (std::vector<double>{4, 1500, 15000, 8, 4, 0.04, 0.02, 3, 7, 8, 1, 0.25, 0}));
   std::string comments;
   for (const auto& c : t.comments) comments += c + "\n";
   EXPECT_NE(comments.find("curve"), std::string::npos);

@@ -24,6 +24,7 @@ ContactSolveOutcome solve_contact(NewtonSolver& newton, WinklerContactForm& cont
     out.contact_iterations = 1;
     out.newton_iterations = n.iterations;
     out.converged = n.converged;
+    out.tangent_shift = n.final_shift;
     if (!n.converged) out.failure = fmt::format("Newton: residual {:.1e} after {} iterations", n.relative_residual, n.iterations);
     return out;
   }
@@ -56,6 +57,7 @@ ContactSolveOutcome two_level_iteration(NewtonSolver& newton, Eigen::VectorXd& u
     newton.set_residual_tolerance(final_tolerance);
     out.contact_iterations = outer;
     out.newton_iterations += n.iterations;
+    out.tangent_shift = n.final_shift;
     if (!n.converged) {
       out.failure = fmt::format("Newton in contact iteration {}: residual {:.1e} after {} iterations", outer,
                                 n.relative_residual, n.iterations);

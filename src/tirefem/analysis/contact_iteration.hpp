@@ -18,6 +18,9 @@ struct ContactSolveOutcome {
   int contact_iterations = 0;  // outer iterations = Newton solves (1 for the single loop)
   int newton_iterations = 0;   // linear solves
   int region_changes = 0;      // points whose membership of Ωc changed in the last outer iteration
+  // Relative diagonal shift the tangent needed at the last factorisation (NewtonOutcome::final_shift):
+  // 0 for a positive definite tangent, a stable equilibrium; > 0 an indefinite one, an unstable state.
+  double tangent_shift = 0.0;
   std::string failure;
 };
 

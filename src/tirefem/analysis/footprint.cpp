@@ -170,10 +170,14 @@ class StaticContactRun {
     const LoadPoint& p = result_.points.back();
     if (progress_)
       progress_(fmt::format("  δz {:6.2f} mm: Qz {:8.1f} N, patch {:5.1f} × {:5.1f} mm, pmax {:.3f} MPa "
-                            "({} contact, {} Newton iterations{}, {:.2f} s)",
+                            "({} contact, {} Newton iterations{}, {:.2f} s){}",
                             deflection, p.patch.Qz_N, p.patch.patch_length_mm, p.patch.patch_width_mm,
                             p.patch.max_pressure_MPa, p.contact_iterations, p.newton_iterations,
-                            step.cutbacks ? fmt::format(", {} cut-backs", step.cutbacks) : "", p.time_s));
+                            step.cutbacks ? fmt::format(", {} cut-backs", step.cutbacks) : "", p.time_s,
+                            stable(p.tangent_shift)
+                                ? ""
+                                : fmt::format(" UNSTABLE: the tangent needs a shift of {:.0e} (indefinite)",
+                                              p.tangent_shift)));
     return true;
   }
 
@@ -199,6 +203,7 @@ class StaticContactRun {
     p.newton_iterations = step.newton_iterations;
     p.factorizations = factorizations;
     p.increments = step.increments;
+    p.tangent_shift = step.last.tangent_shift;
     p.time_s = time;
     result_.points.push_back(p);
     result_.counters.cutbacks += step.cutbacks;

@@ -26,6 +26,10 @@ struct PatchFigures {
 PatchFigures patch_figures(const std::vector<TreadPoint>& points, const std::vector<TreadPointState>& states,
                            bool half_model);
 
+// A converged state whose tangent needed more than this relative shift is an unstable equilibrium.
+inline constexpr double kUnstableShift = 1e-6;
+inline bool stable(double tangent_shift) { return tangent_shift <= kUnstableShift; }
+
 struct LoadPoint {
   double deflection_mm = 0.0;
   PatchFigures patch;
@@ -33,6 +37,9 @@ struct LoadPoint {
   int newton_iterations = 0;   // Newton iterations (linear solves) of all increments to this point
   int factorizations = 0;
   int increments = 0;          // > 1 when the step was cut back
+  // Stability of the converged state: the relative diagonal shift its tangent needed to be positive
+  // definite (0: stable; a shift at round-off level, ≤ 1e-6, counts as neutral; larger: unstable).
+  double tangent_shift = 0.0;
   double time_s = 0.0;
 };
 

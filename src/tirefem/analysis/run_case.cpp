@@ -16,6 +16,7 @@
 #include "tirefem/results/footprint_report.hpp"
 #include "tirefem/results/inflation_report.hpp"
 #include "tirefem/results/rolling_report.hpp"
+#include "tirefem/solver/blas_kernel.hpp"
 
 namespace tirefem {
 namespace {
@@ -28,6 +29,11 @@ toml::table counters_table(const SolveCounters& c) {
                      {"assembly_time_s", c.assembly_s},
                      {"factorization_time_s", c.factorization_s},
                      {"time_s", c.wall_s}};
+}
+
+toml::table blas_table() {
+  const BlasKernel b = blas_kernel();
+  return toml::table{{"library", b.library}, {"kernel", b.core}, {"kernel_forced", b.forced}};
 }
 
 void report(const ProgressSink& progress, const std::string& message) {
@@ -140,6 +146,7 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
                       {"free_dof", equations},
                       {"elements", tm.mesh.element_count()},
                       {"threads", omp_get_max_threads()},
+                      {"blas", blas_table()},
                       {"mesh", toml::table{{"circumferential_elements", c.mesh.circumferential_elements},
                                            {"meridional_elements", c.mesh.meridional_elements},
                                            {"model", c.mesh.half_model ? "half" : "full"}}}};

@@ -11,11 +11,8 @@ Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& v) {
   return m;
 }
 
-}  // namespace
-
-PressureLoad follower_pressure(const NodeMatrix& reference, const NodeMatrix& current, double pressure,
-                               Kinematics kinematics, bool with_tangent) {
-  // Orientation: the load pushes from the inner face towards the outer face.
+// +1 when the reference normal g1 × g2 of the inner face points towards the outer face.
+double load_orientation(const NodeMatrix& reference) {
   const BilinearShape centre = bilinear_shape(0.0, 0.0);
   Eigen::Vector3d g1c = Eigen::Vector3d::Zero(), g2c = Eigen::Vector3d::Zero(),
                   director = Eigen::Vector3d::Zero();
@@ -24,7 +21,30 @@ PressureLoad follower_pressure(const NodeMatrix& reference, const NodeMatrix& cu
     g2c += centre.dn_deta[a] * reference.col(a);
     director += centre.n[a] * (reference.col(a + 4) - reference.col(a));
   }
-  const double sign = g1c.cross(g2c).dot(director) >= 0.0 ? 1.0 : -1.0;
+  return g1c.cross(g2c).dot(director) >= 0.0 ? 1.0 : -1.0;
+}
+
+}  // namespace
+
+double enclosed_volume_part(const NodeMatrix& reference, const NodeMatrix& current) {
+  double volume = 0.0;
+  for (const auto& gp : kGauss2x2) {
+    const BilinearShape s = bilinear_shape(gp[0], gp[1]);
+    Eigen::Vector3d x = Eigen::Vector3d::Zero(), g1 = Eigen::Vector3d::Zero(), g2 = Eigen::Vector3d::Zero();
+    for (int a = 0; a < 4; ++a) {
+      x += s.n[a] * current.col(a);
+      g1 += s.dn_dxi[a] * current.col(a);
+      g2 += s.dn_deta[a] * current.col(a);
+    }
+    volume += x.dot(g1.cross(g2)) / 3.0;
+  }
+  return load_orientation(reference) * volume;
+}
+
+PressureLoad follower_pressure(const NodeMatrix& reference, const NodeMatrix& current, double pressure,
+                               Kinematics kinematics, bool with_tangent) {
+  // Orientation: the load pushes from the inner face towards the outer face.
+  const double sign = load_orientation(reference);
   const NodeMatrix& geometry = kinematics == Kinematics::nonlinear ? current : reference;
 
   PressureLoad out;

@@ -14,4 +14,9 @@ struct PressureLoad {
 PressureLoad follower_pressure(const NodeMatrix& reference, const NodeMatrix& current, double pressure,
                                Kinematics kinematics, bool with_tangent = true);
 
+// ⅓ ∫ x·n dA over the inner face (x absolute positions, n oriented like the load): summed over a closed
+// surface, the enclosed volume V (MODEL.md §8), whose gradient is the follower load per unit pressure.
+// The 2 × 2 Gauss rule integrates this bilinear-surface integrand (degree 2 in each direction) exactly.
+double enclosed_volume_part(const NodeMatrix& reference, const NodeMatrix& current);
+
 }  // namespace tirefem

@@ -19,4 +19,15 @@ void LinearizedForm::assemble(const FormInput& input, SparseSystem& system) cons
   if (input.with_tangent) system.add_matrix(tangent_);
 }
 
+std::optional<EnergyChange> LinearizedForm::energy_change(const Eigen::VectorXd& from, const Eigen::VectorXd& to,
+                                                         double) const {
+  const Eigen::VectorXd r0 = dofs_.gather(residual_);
+  const auto energy = [&](const Eigen::VectorXd& u) {
+    const Eigen::VectorXd w = dofs_.gather(u - u0_);
+    return r0.dot(w) + 0.5 * w.dot(tangent_ * w);
+  };
+  const double a = energy(from), b = energy(to);
+  return EnergyChange{b - a, std::abs(a) + std::abs(b)};
+}
+
 }  // namespace tirefem

@@ -15,6 +15,10 @@ class LinearizedForm final : public Form {
                  Eigen::VectorXd u0);
   void add_pattern(PatternBuilder& pattern) const override;
   void assemble(const FormInput& input, SparseSystem& system) const override;
+  bool has_potential() const override { return true; }
+  // The quadratic Π = R0·w + ½ wᵀK0 w, w = u − u0 (K0 is symmetric here).
+  std::optional<EnergyChange> energy_change(const Eigen::VectorXd& from, const Eigen::VectorXd& to,
+                                            double load_factor) const override;
 
  private:
   const ShellMesh& mesh_;

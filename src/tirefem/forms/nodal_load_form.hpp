@@ -13,6 +13,13 @@ class NodalLoadForm final : public Form {
     for (Eigen::Index d = 0; d < forces_.size(); ++d)
       if (forces_[d] != 0.0) system.add_residual(static_cast<int>(d), -input.load_factor * forces_[d]);
   }
+  bool has_potential() const override { return true; }
+  // A dead load: Π = −λ F·u.
+  std::optional<EnergyChange> energy_change(const Eigen::VectorXd& from, const Eigen::VectorXd& to,
+                                            double load_factor) const override {
+    const double work = load_factor * forces_.dot(to - from);
+    return EnergyChange{-work, std::abs(work)};
+  }
 
  private:
   Eigen::VectorXd forces_;

@@ -28,4 +28,30 @@ void PressureForm::assemble(const FormInput& input, SparseSystem& system) const 
   }
 }
 
+std::optional<EnergyChange> PressureForm::energy_change(const Eigen::VectorXd& from, const Eigen::VectorXd& to,
+                                                       double load_factor) const {
+  if (!symmetrize_ && kinematics_ == Kinematics::nonlinear) return std::nullopt;
+  const int n = static_cast<int>(elements_.size());
+  const double p = load_factor * pressure_;
+  std::vector<EnergyChange> parts(n);  // summed in order afterwards: the same result on any thread count
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < n; ++i) {
+    const int e = elements_[i];
+    const NodeMatrix reference = mesh_.element_reference(e);
+    const NodeMatrix at_from = element_current(mesh_, e, from), at_to = element_current(mesh_, e, to);
+    if (kinematics_ == Kinematics::linear) {
+      const ElementVector f = follower_pressure(reference, reference, p, kinematics_, false).force;
+      ElementVector du;
+      for (int k = 0; k < 8; ++k) du.segment<3>(3 * k) = at_to.col(k) - at_from.col(k);
+      parts[i] = {-f.dot(du), std::abs(f.dot(du))};
+      continue;
+    }
+    const double v_from = enclosed_volume_part(reference, at_from), v_to = enclosed_volume_part(reference, at_to);
+    parts[i] = {-p * (v_to - v_from), std::abs(p) * (std::abs(v_to) + std::abs(v_from))};
+  }
+  EnergyChange total;
+  for (const EnergyChange& part : parts) total += part;
+  return total;
+}
+
 }  // namespace tirefem

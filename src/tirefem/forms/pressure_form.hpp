@@ -19,6 +19,11 @@ class PressureForm final : public Form {
   void add_pattern(PatternBuilder& pattern) const override;
   void assemble(const FormInput& input, SparseSystem& system) const override;
   bool symmetric() const override { return symmetrize_ || kinematics_ == Kinematics::linear; }
+  bool has_potential() const override { return symmetrize_ || kinematics_ == Kinematics::linear; }
+  // −λp ΔV on a closed surface (`symmetrize`, MODEL.md §8); −λ F·Δu for the dead load of the linear
+  // theory; nothing for a follower pressure on an open surface, which has no potential.
+  std::optional<EnergyChange> energy_change(const Eigen::VectorXd& from, const Eigen::VectorXd& to,
+                                            double load_factor) const override;
 
  private:
   const ShellMesh& mesh_;

@@ -27,6 +27,10 @@ class ShellInternalForce final : public Form {
                      Kinematics kinematics);
   void add_pattern(PatternBuilder& pattern) const override;
   void assemble(const FormInput& input, SparseSystem& system) const override;
+  bool has_potential() const override { return true; }
+  // The strain energy change, element by element.
+  std::optional<EnergyChange> energy_change(const Eigen::VectorXd& from, const Eigen::VectorXd& to,
+                                            double load_factor) const override;
 
  private:
   const ShellMesh& mesh_;

@@ -110,6 +110,20 @@ void WinklerContactForm::assemble(const FormInput& input, SparseSystem& system) 
   }
 }
 
+std::optional<EnergyChange> WinklerContactForm::energy_change(const Eigen::VectorXd& from,
+                                                             const Eigen::VectorXd& to, double) const {
+  const auto energy = [&](int q, const Eigen::VectorXd& u) {
+    const double g = support_.penetration(position(points_[q], u), deflection_).value;
+    return carries_load(q, g) ? 0.5 * stiffness_ * points_[q].weight * g * g : 0.0;
+  };
+  EnergyChange total;
+  for (int q = 0; q < static_cast<int>(points_.size()); ++q) {
+    const double a = energy(q, from), b = energy(q, to);
+    total += {b - a, a + b};
+  }
+  return total;
+}
+
 std::vector<char> WinklerContactForm::region(const Eigen::VectorXd& u) const {
   std::vector<char> r(points_.size());
   for (std::size_t q = 0; q < points_.size(); ++q)

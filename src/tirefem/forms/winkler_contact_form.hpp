@@ -58,6 +58,11 @@ class WinklerContactForm final : public Form {
 
   void add_pattern(PatternBuilder& pattern) const override;
   void assemble(const FormInput& input, SparseSystem& system) const override;
+  bool has_potential() const override { return true; }
+  // Change of ½ ∫ kp g² dΩ over the points that carry load (eq. 6): a frozen region's points whatever
+  // the sign of g, else those with g > 0 (⟨g⟩₊², MODEL.md §8).
+  std::optional<EnergyChange> energy_change(const Eigen::VectorXd& from, const Eigen::VectorXd& to,
+                                            double load_factor) const override;
 
   // The support's approach δz towards the axle.
   void set_deflection(double deflection) { deflection_ = deflection; }

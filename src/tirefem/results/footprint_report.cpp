@@ -134,18 +134,22 @@ CsvTable load_curve_table(const StaticContactResult& r) {
                   : "stopped early" + (r.failure.empty() ? std::string() : ": " + r.failure),
       "Qz and the patch figures are of the full tyre; pressure = contact pressure qn of the tread",
       "contact_iterations: outer iterations of the last increment; newton_iterations, factorizations, "
-      "increments, time_s: all increments to the point"};
+      "increments, time_s: all increments to the point",
+      "tangent_shift: relative diagonal shift that made the tangent positive definite (0: a stable "
+      "equilibrium; above 1e-6: unstable, the tangent is indefinite)"};
   t.columns = {"deflection_mm",     "Qz_N",
                "contact_area_mm2",  "patch_length_mm",
                "patch_width_mm",    "max_pressure_MPa",
                "mean_pressure_MPa", "contact_iterations",
                "newton_iterations", "factorizations",
-               "increments",        "time_s"};
+               "increments",        "time_s",
+               "tangent_shift"};
   for (const LoadPoint& p : r.points)
     t.rows.push_back({p.deflection_mm, p.patch.Qz_N, p.patch.contact_area_mm2, p.patch.patch_length_mm,
                       p.patch.patch_width_mm, p.patch.max_pressure_MPa, p.patch.mean_pressure_MPa,
                       static_cast<double>(p.contact_iterations), static_cast<double>(p.newton_iterations),
-                      static_cast<double>(p.factorizations), static_cast<double>(p.increments), p.time_s});
+                      static_cast<double>(p.factorizations), static_cast<double>(p.increments), p.time_s,
+                      p.tangent_shift});
   return t;
 }
 
@@ -451,15 +455,20 @@ VtuMesh loaded_shell_vtu(const TyreMesh& tm, const TyreDescription& tyre, const 
 toml::table load_curve_summary(const StaticContactResult& r) {
   toml::table t;
   insert_study(t, r);
-  toml::array points;
+  toml::array points, unstable;
   for (const LoadPoint& p : r.points) {
     toml::table pt;
     insert_patch(pt, p);
     pt.insert("contact_iterations", p.contact_iterations);
     pt.insert("newton_iterations", p.newton_iterations);
+    pt.insert("tangent_shift", p.tangent_shift);
+    pt.insert("stable", stable(p.tangent_shift));
+    if (!stable(p.tangent_shift)) unstable.push_back(p.deflection_mm);
     points.push_back(std::move(pt));
   }
   t.insert("points", std::move(points));
+  // Where the path passed unstable equilibria (an indefinite converged tangent): the deflections.
+  t.insert("unstable_points_deflection_mm", std::move(unstable));
   return t;
 }
 

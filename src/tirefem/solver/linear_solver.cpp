@@ -23,11 +23,16 @@ struct SparseDirectSolver::Impl {
   int cholesky_failures = 0;
   bool sticky_lu = true;
   double last_shift = 0.0;
+  double last_relative_shift = 0.0;  // of factorize_inertia_corrected
+  std::vector<int> diagonal_index;   // position of each diagonal entry in the matrix's value array
+  SparseMatrix shifted;
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholesky;
   Eigen::UmfPackLU<SparseMatrix> lu;
 };
 
 SparseDirectSolver::SparseDirectSolver(bool symmetric, bool sticky_lu) : impl_(std::make_unique<Impl>()) {
+  // "Not positive definite" is an answer here (inertia correction, LU fallback), not a warning to print.
+  impl_->cholesky.cholmod().print = 0;
   impl_->use_lu = !symmetric;
   impl_->sticky_lu = sticky_lu;
 }
@@ -56,6 +61,11 @@ void SparseDirectSolver::factorize(const SparseMatrix& matrix) {
     // Not positive definite: LU for this matrix; after two such matrices in a row, LU from now on.
     if (++s.cholesky_failures >= 2 && s.sticky_lu) s.use_lu = true;
   }
+  factorize_lu(matrix);
+}
+
+void SparseDirectSolver::factorize_lu(const SparseMatrix& matrix) {
+  auto& s = *impl_;
   if (!s.lu_analysed) {
     // No iterative refinement in UMFPACK's solve: it triples the cost of each solve, and Newton (or
     // GMRES around a reused factorisation) corrects the residual anyway.
@@ -110,6 +120,52 @@ double SparseDirectSolver::factorize_shifted(const SparseMatrix& matrix) {
   }
   if (shift > 0) ++stats_.shifted_factorizations;
   s.last_shift = shift;
+  s.factorized = true;
+  s.lu_active = false;
+  return shift;
+}
+
+double SparseDirectSolver::factorize_inertia_corrected(const SparseMatrix& matrix) {
+  auto& s = *impl_;
+  if (!s.cholesky_analysed) {
+    const auto t0 = std::chrono::steady_clock::now();
+    s.cholesky.analyzePattern(matrix);
+    s.cholesky_analysed = true;
+    stats_.analysis_s += seconds_since(t0);
+  }
+  const int n = static_cast<int>(matrix.cols());
+  if (static_cast<int>(s.diagonal_index.size()) != n || s.shifted.nonZeros() != matrix.nonZeros()) {
+    s.diagonal_index.assign(n, -1);
+    for (int j = 0; j < n; ++j)
+      for (int k = matrix.outerIndexPtr()[j]; k < matrix.outerIndexPtr()[j + 1]; ++k)
+        if (matrix.innerIndexPtr()[k] == j) s.diagonal_index[j] = k;
+    s.shifted = matrix;
+  }
+  constexpr double kFirstShift = 1e-6, kGrowth = 10.0, kLargestShift = 1e4;
+  // A DOF without any stiffness of its own still gets a shift, relative to the matrix's scale.
+  const double floor = 1e-8 * matrix.diagonal().cwiseAbs().mean();
+  // Start one decade below the last shift that worked (or at 0): the tangent along a path changes slowly.
+  double shift = s.last_relative_shift > 10 * kFirstShift ? s.last_relative_shift / kGrowth : 0.0;
+  while (true) {
+    const double* a = matrix.valuePtr();
+    std::copy(a, a + matrix.nonZeros(), s.shifted.valuePtr());
+    if (shift > 0)
+      for (int j = 0; j < n; ++j) {
+        const int k = s.diagonal_index[j];
+        if (k >= 0) s.shifted.valuePtr()[k] += shift * std::max(std::abs(a[k]), floor);
+      }
+    const auto t0 = std::chrono::steady_clock::now();
+    s.cholesky.factorize(s.shifted);
+    stats_.factorization_s += seconds_since(t0);
+    ++stats_.factorizations;
+    if (s.cholesky.info() == Eigen::Success) break;
+    ++stats_.failed_cholesky;
+    shift = shift == 0.0 ? kFirstShift : kGrowth * shift;
+    if (shift > kLargestShift) throw std::runtime_error("no shift makes the tangent positive definite");
+  }
+  if (shift > 0) ++stats_.shifted_factorizations;
+  stats_.max_shift = std::max(stats_.max_shift, shift);
+  s.last_relative_shift = shift;
   s.factorized = true;
   s.lu_active = false;
   return shift;

@@ -15,7 +15,9 @@ struct LinearSolverStats {
   double factorization_s = 0.0;
   double solve_s = 0.0;
   bool used_lu = false;
-  int shifted_factorizations = 0;  // of an indefinite matrix, as a preconditioner
+  int shifted_factorizations = 0;  // of an indefinite matrix (inertia correction or preconditioner)
+  int failed_cholesky = 0;         // attempts that found the matrix not positive definite
+  double max_shift = 0.0;          // largest relative shift σ of an inertia-corrected factorisation
   int krylov_solves = 0;      // successful preconditioned GMRES solves (a factorisation reused)
   int krylov_failures = 0;    // GMRES solves given up (followed by a new factorisation)
   int krylov_iterations = 0;  // over all of them
@@ -34,10 +36,19 @@ class SparseDirectSolver {
 
   // Throws std::runtime_error if the matrix is singular.
   void factorize(const SparseMatrix& matrix);
+  // An LU factorisation whatever the matrix (solve() then uses it). Throws if the matrix is singular.
+  void factorize_lu(const SparseMatrix& matrix);
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
   bool has_factorization() const;
   // True when every factorisation is an LU (an unsymmetric problem, or a sticky switch after indefinite ones).
   bool uses_lu() const;
+
+  // Inertia correction (symmetric A): a Cholesky factorisation of A + σ·diag|A| with the smallest σ of
+  // 0, 1e-6, 1e-5, … that makes it positive definite (starting near the last σ that worked, since
+  // consecutive tangents are alike). Returns σ: 0 when A itself is positive definite; σ > 0 marks an
+  // indefinite A, and solve() then gives a step that descends the energy (MODEL.md §8). Throws when even
+  // σ = 1e4 fails.
+  double factorize_inertia_corrected(const SparseMatrix& matrix);
 
   // A Cholesky factorisation of A + σI for use as a preconditioner (solve_preconditioned): σ = 0 when A
   // is positive definite, else the smallest tried of σ₀, 10σ₀, … (σ₀ = 1e-4 × mean |diagonal|, starting

@@ -32,6 +32,23 @@ struct NewtonSettings {
   // also slow Newton down).
   int refresh_after_krylov_iterations = 8;
   double krylov_tolerance = 1e-3;  // relative to the preconditioned residual (inexact Newton)
+  // Symmetric problems: an indefinite tangent is factorised by Cholesky with the smallest diagonal shift
+  // that makes it positive definite (inertia correction) instead of by LU; the step then descends the
+  // energy where the problem has one.
+  bool inertia_correction = true;
+  // Which equilibrium Newton converges to, for problems with a potential (MODEL.md §8):
+  //  - false (nearest): exact Newton steps (found on the inertia-corrected factorisation by GMRES, or by
+  //    LU when the tangent is strongly indefinite), so Newton converges to the equilibrium next to its
+  //    start, stable or not; the stability of the result is reported (NewtonOutcome::final_shift).
+  //  - true (stable): every step must lower the energy. On an indefinite tangent the exact step is kept
+  //    only if it descends, else the shifted one is taken; a shifted step must lower the energy by at
+  //    least armijo × its first-order prediction (cut back by quadratic interpolation, at most
+  //    max_energy_backtracks times) and is extended while the energy keeps falling steeply along it.
+  //    Newton then cannot settle on a saddle: it leaves an unstable equilibrium for a stable one (a
+  //    wrinkled or snapped-through state), the way a quasi-static structure does.
+  bool stable_equilibrium = false;
+  int max_energy_backtracks = 12;
+  double armijo = 1e-4;
 };
 
 struct NewtonOutcome {
@@ -39,6 +56,11 @@ struct NewtonOutcome {
   int iterations = 0;              // linear solves
   double relative_residual = 0.0;  // final ‖R_free‖ / (λ‖F‖)
   std::vector<double> residual_history;  // relative residual before each iteration
+  double max_shift = 0.0;    // largest relative inertia shift the tangent needed in this solve
+  double final_shift = 0.0;  // that of the last factorisation: > 0 means the tangent at (or next to)
+                             // the solution is indefinite, an unstable equilibrium
+  int backtracks = 0;        // energy line-search cut-backs
+  int extensions = 0;        // shifted steps extended along a falling energy
 };
 
 class NewtonSolver {
@@ -57,12 +79,21 @@ class NewtonSolver {
  private:
   // `fresh`: factorise the current tangent even if a reused factorisation would do.
   bool solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du, bool fresh);
+  // Inertia-corrected factorisation of the current tangent and the step from it.
+  bool solve_inertia_corrected(const Eigen::VectorXd& rhs, Eigen::VectorXd& du);
+  // Cuts back the step base → base + du (residual r_base there) until the energy falls by the Armijo
+  // amount; sets u to the accepted point. Returns the accepted fraction of the step.
+  double energy_line_search(const Eigen::VectorXd& base, const Eigen::VectorXd& du, double slope,
+                            double load_factor, Eigen::VectorXd& u, int& backtracks);
 
   NonlinearProblem& problem_;
   NewtonSettings settings_;
   SparseDirectSolver linear_;
   int total_iterations_ = 0;
   bool refresh_ = false;  // the last reused factorisation needed many GMRES iterations: factorise next
+  bool inertia_corrected_ = false;  // symmetric problem solved with inertia correction
+  double shift_ = 0.0;              // relative shift of the factorisation behind the last step
+  bool lu_only_ = false;            // strongly indefinite in this solve: exact steps by LU
 };
 
 struct LoadSteppingSettings {

@@ -10,6 +10,8 @@ namespace tirefem {
 struct AssemblyStats {
   int assemblies = 0;
   double assembly_s = 0.0;
+  int energy_evaluations = 0;
+  double energy_s = 0.0;
 };
 
 class NonlinearProblem {
@@ -21,6 +23,10 @@ class NonlinearProblem {
   const SparseSystem& system() const { return system_; }
   const DofMap& dofs() const { return dofs_; }
   bool symmetric() const;
+  // Π(to) − Π(from) at λ when every form derives from a potential (MODEL.md §8), else nothing.
+  std::optional<EnergyChange> energy_change(const Eigen::VectorXd& from, const Eigen::VectorXd& to,
+                                            double load_factor);
+  bool has_potential() const { return has_potential_; }
   const AssemblyStats& stats() const { return stats_; }
   // ‖R_free(0, 1)‖: the size of the applied load, the scale for residual tolerances.
   double load_scale();
@@ -31,6 +37,7 @@ class NonlinearProblem {
   SparseSystem system_;
   AssemblyStats stats_;
   double load_scale_ = -1.0;
+  bool has_potential_ = true;
 };
 
 }  // namespace tirefem

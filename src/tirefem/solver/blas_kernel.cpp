@@ -1,0 +1,66 @@
+#include "tirefem/solver/blas_kernel.hpp"
+
+#include <dlfcn.h>
+#include <unistd.h>
+
+#include <cctype>
+#include <cstdlib>
+
+namespace tirefem {
+namespace {
+
+// Looked up at run time: the BLAS behind libblas.so.3 is chosen by the system (Debian's alternatives),
+// and only OpenBLAS has these functions.
+const char* openblas_string(const char* function) {
+  using Getter = char* (*)();
+  const auto getter = reinterpret_cast<Getter>(dlsym(RTLD_DEFAULT, function));
+  return getter ? getter() : nullptr;
+}
+
+std::string trimmed(std::string s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.pop_back();
+  return s;
+}
+
+bool generic_kernel(const std::string& core) {
+  std::string lower;
+  for (char c : core) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return lower == "prescott" || lower == "core2" || lower == "nehalem" || lower.empty();
+}
+
+}  // namespace
+
+BlasKernel blas_kernel() {
+  BlasKernel k;
+  const char* config = openblas_string("openblas_get_config");
+  const char* core = openblas_string("openblas_get_corename");
+  k.library = config ? trimmed(std::string("OpenBLAS ") + config) : "unknown BLAS (not OpenBLAS)";
+  k.core = core ? core : "";
+  k.forced = std::getenv("OPENBLAS_CORETYPE") != nullptr;
+  return k;
+}
+
+std::string best_kernel_for_this_cpu() {
+#if defined(__x86_64__)
+  __builtin_cpu_init();
+  if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
+      __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl"))
+    return "SkylakeX";
+  if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) return "Haswell";
+  if (__builtin_cpu_supports("avx")) return "Sandybridge";
+#endif
+  return "";
+}
+
+void use_fast_blas_kernel(char** argv) {
+  if (std::getenv("OPENBLAS_CORETYPE")) return;  // the user's (or an earlier pass's) choice
+  const BlasKernel k = blas_kernel();
+  if (k.library.rfind("OpenBLAS", 0) != 0 || !generic_kernel(k.core)) return;
+  const std::string best = best_kernel_for_this_cpu();
+  if (best.empty()) return;
+  setenv("OPENBLAS_CORETYPE", best.c_str(), 1);
+  execv("/proc/self/exe", argv);
+  // execv failed (no /proc): carry on with the generic kernel; the bench and summary.json name it.
+}
+
+}  // namespace tirefem

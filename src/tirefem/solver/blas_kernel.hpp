@@ -1,0 +1,28 @@
+#pragma once
+// Which BLAS the sparse factorisations run on, and the choice of its kernel. OpenBLAS picks its kernel
+// (the "core") from the CPU when the library loads; Debian 12's 0.3.21 does not know some newer CPUs and
+// then falls back to its slowest generic x86-64 kernel (Prescott, SSE3), ~25% slower per factorisation
+// (VERIFICATION of issue 9). The choice can only be changed before the library loads, through the
+// environment variable OPENBLAS_CORETYPE, so a program re-executes itself once with it set.
+#include <string>
+
+namespace tirefem {
+
+struct BlasKernel {
+  std::string library;  // "OpenBLAS 0.3.21 …" as the library describes itself, or "unknown BLAS"
+  std::string core;     // the kernel in use, e.g. "Haswell", "SkylakeX", "Prescott"; empty if unknown
+  bool forced = false;  // chosen through OPENBLAS_CORETYPE
+};
+
+BlasKernel blas_kernel();
+
+// The OpenBLAS kernel this CPU supports best ("SkylakeX" with AVX-512, "Haswell" with AVX2 and FMA,
+// "Sandybridge" with AVX), or empty when none of these applies.
+std::string best_kernel_for_this_cpu();
+
+// When OpenBLAS fell back to its generic kernel although the CPU supports a faster one, and the user has
+// not chosen one: sets OPENBLAS_CORETYPE and re-executes the program with the same arguments (does not
+// return then). Otherwise returns and changes nothing. Call first thing in main().
+void use_fast_blas_kernel(char** argv);
+
+}  // namespace tirefem
