@@ -1,6 +1,7 @@
 // Benchmark of the standard runs on the example tyre (not a test): prints DOF, iterations,
 // factorisations and where the time goes.
 // Usage: tirefem_bench [CASE.toml [two_level|single_loop]]   inflation + the plane load curve 0–40 mm
+//        tirefem_bench inflation [CASE.toml]                  the inflation alone
 //        tirefem_bench rolling [CASE.toml]                    one rolling state + a 15-point slip sweep
 //                                                             (mesh and μ of the case's first rolling study)
 #include <chrono>
@@ -99,6 +100,9 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
+  // "inflation [CASE]": the inflation alone (a quick measure of assembly and factorisation speed).
+  const bool inflation_only = argc > 1 && std::string(argv[1]) == "inflation";
+  if (inflation_only) --argc, ++argv;
   const std::string file = argc > 1 ? argv[1] : std::string(TIREFEM_SOURCE_DIR) + "/examples/175-70R13.toml";
   try {
     const auto t0 = std::chrono::steady_clock::now();
@@ -116,6 +120,7 @@ int main(int argc, char** argv) {
     print_counters(fmt::format("inflation to {} MPa, nonlinear: {}", c.inflation.pressure,
                                r.converged ? "converged" : "NOT CONVERGED"),
                    r.counters);
+    if (inflation_only) return r.converged ? 0 : 1;
     // The benchmark: the load characteristic 0–40 mm in 20 points on the plane. Optional second
     // argument: "two_level" or "single_loop" overrides the case's contact iteration.
     if (argc > 2)

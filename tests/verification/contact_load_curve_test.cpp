@@ -117,3 +117,31 @@ TEST(ContactLoadCurve, DrumBelowPlaneAndLinearAbovePlane) {
 
 }  // namespace
 }  // namespace tirefem::verification
+
+namespace tirefem::verification {
+namespace {
+
+// One inflation per tyre and mesh (issue 9): a load curve and a footprint started from an inflated state
+// solved beforehand (as the CLI shares it between studies) equal the ones that inflate by themselves.
+TEST(ContactLoadCurve, SharedInflatedStateEqualsOwnInflation) {
+  const Case& c = example_case();
+  const TyreMesh tm = build_tyre_mesh(c.tyre, coarse_mesh(24, 8));
+  const InflationResult inflated = inflate_for_contact(tm, c.inflation);
+  ASSERT_TRUE(inflated.converged);
+  const LoadCurveStudy study = load_curve("plane", plane_support(), 20.0, 2);
+  const StaticContactResult own = curve(tm, study);
+  const StaticContactResult shared =
+      run_load_curve(tm, c.tyre, c.inflation, test_contact_settings(), study, {}, &inflated);
+  ASSERT_TRUE(own.completed && shared.completed);
+  ASSERT_EQ(own.points.size(), shared.points.size());
+  for (std::size_t k = 0; k < own.points.size(); ++k) {
+    const double a = own.points[k].patch.Qz_N, b = shared.points[k].patch.Qz_N;
+    std::printf("  δz %.1f mm: Qz own inflation %.9f N, shared %.9f N\n", own.points[k].deflection_mm, a, b);
+    // Equal up to the summation order of the parallel assembly (≤ 1e-10 relative seen between runs).
+    EXPECT_NEAR(a, b, 1e-8 * std::max(std::abs(a), 1.0)) << "δz = " << own.points[k].deflection_mm;
+  }
+  EXPECT_EQ(shared.counters.newton_iterations, own.counters.newton_iterations);
+}
+
+}  // namespace
+}  // namespace tirefem::verification

@@ -50,6 +50,10 @@ inline ContactSettings test_contact_settings(
     ContactSettings::Iteration iteration = ContactSettings::Iteration::two_level) {
   ContactSettings s = example_case().contact;
   s.iteration = iteration;
+  // The coarse test meshes are unstable from the inflated state on (their tangent needs a shift of ~0.1:
+  // see tests/smoke/coarse_case.toml): the tests follow the nearest equilibrium, as the figures they
+  // quote were found.
+  s.equilibrium = ContactSettings::Equilibrium::nearest;
   s.reuse_factorizations = false;
   return s;
 }

@@ -221,3 +221,44 @@ TEST(ShellBenchmarks, CantileverRolledUpByEndMoment) {
 
 }  // namespace
 }  // namespace tirefem::verification
+
+namespace tirefem::verification {
+namespace {
+
+// ---- a bifurcation: the cantilever column past its Euler load --------------------------------------
+// The strip of the roll-up test (EI = 100, L = 12) under a dead axial end load P = 1.393 P_cr,
+// P_cr = π²EI/(4L²). The straight column is an equilibrium at any load, unstable beyond P_cr: Newton
+// converging to the nearest equilibrium from the unloaded state finds it, and must report its tangent
+// indefinite; below P_cr (0.9 P_cr) the same state is stable.
+TEST(ShellBenchmarks, CantileverColumnPastItsEulerLoadIsReportedUnstable) {
+  Cantilever c;
+  c.length = 12.0;
+  c.nx = 32;
+  const auto m = cantilever_model(c);
+  const ShellMesh& mesh = m->mesh;
+  const double ei = 100.0, p_cr = kPi * kPi * ei / (4 * c.length * c.length);
+  DofMap dofs(mesh.dof_count());
+  dofs.fix(both_faces(mesh.edge_pairs(GridEdge::u_min), {0, 1, 2}));
+  const auto solve = [&](double ratio) {
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(mesh.dof_count());
+    for (int q : m->tip) add_split_force(f, q, Eigen::Vector3d(-ratio * p_cr / m->tip.size(), 0, 0));
+    std::vector<std::unique_ptr<Form>> forms;
+    forms.push_back(std::make_unique<ShellInternalForce>(mesh, m->sections, Kinematics::nonlinear));
+    forms.push_back(std::make_unique<NodalLoadForm>(f));
+    NonlinearProblem problem(dofs, std::move(forms));
+    NewtonSolver newton(problem, benchmark_newton_settings());
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(mesh.dof_count());
+    const NewtonOutcome out = newton.solve(u, 1.0);
+    const Eigen::Vector3d tip = mean_mid_displacement(u, m->tip);
+    std::printf("  column at P/Pcr %.3f: converged %d in %d iterations, tip -u %.2e, w %.1e, tangent shift %.0e\n",
+                ratio, out.converged, out.iterations, -tip.x(), tip.z(), out.final_shift);
+    EXPECT_TRUE(out.converged);
+    EXPECT_NEAR(tip.z(), 0.0, 1e-9) << "the nearest equilibrium is the straight column";
+    return out.final_shift;
+  };
+  EXPECT_EQ(solve(0.9), 0.0) << "below the Euler load the straight column is stable";
+  EXPECT_GT(solve(1.393), 0.0) << "past the Euler load the straight column is unstable (indefinite tangent)";
+}
+
+}  // namespace
+}  // namespace tirefem::verification

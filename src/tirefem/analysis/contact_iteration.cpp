@@ -25,6 +25,8 @@ ContactSolveOutcome solve_contact(NewtonSolver& newton, WinklerContactForm& cont
     out.newton_iterations = n.iterations;
     out.converged = n.converged;
     out.tangent_shift = n.final_shift;
+    out.escapes = n.escapes;
+    out.escaped_shift = n.escaped_shift;
     if (!n.converged) out.failure = fmt::format("Newton: residual {:.1e} after {} iterations", n.relative_residual, n.iterations);
     return out;
   }
@@ -58,6 +60,8 @@ ContactSolveOutcome two_level_iteration(NewtonSolver& newton, Eigen::VectorXd& u
     out.contact_iterations = outer;
     out.newton_iterations += n.iterations;
     out.tangent_shift = n.final_shift;
+    out.escapes += n.escapes;
+    out.escaped_shift = std::max(out.escaped_shift, n.escaped_shift);
     if (!n.converged) {
       out.failure = fmt::format("Newton in contact iteration {}: residual {:.1e} after {} iterations", outer,
                                 n.relative_residual, n.iterations);

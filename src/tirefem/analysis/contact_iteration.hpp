@@ -21,6 +21,10 @@ struct ContactSolveOutcome {
   // Relative diagonal shift the tangent needed at the last factorisation (NewtonOutcome::final_shift):
   // 0 for a positive definite tangent, a stable equilibrium; > 0 an indefinite one, an unstable state.
   double tangent_shift = 0.0;
+  // Unstable equilibria Newton left for a stable state (ContactSettings::Equilibrium::stable), and the
+  // largest shift their tangents needed.
+  int escapes = 0;
+  double escaped_shift = 0.0;
   std::string failure;
 };
 

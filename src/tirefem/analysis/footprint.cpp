@@ -112,21 +112,33 @@ std::unique_ptr<Form> linearized_tyre(const TyreMesh& tm, double pressure, const
   return std::make_unique<LinearizedForm>(tm.mesh, dofs, tyre.system().tangent(), tyre.system().residual(), u0);
 }
 
+}  // namespace
+
+InflationResult inflate_for_contact(const TyreMesh& tm, const InflationSettings& inflation,
+                                    const ProgressSink& progress) {
+  // The geometrically linear solution is linearised about the nonlinear inflated state (the tyre's
+  // stiffness under load comes from its inflation: a linear theory about the unstressed state has no
+  // pressure stiffening at all), so the inflation is nonlinear in both theories.
+  InflationSettings inflate = inflation;
+  inflate.linear = false;
+  return run_inflation(tm, inflate, progress);
+}
+
+namespace {
+
 // Inflated tyre + contact: the forms, the Newton solver and the deflection path over them.
 class StaticContactRun {
  public:
   StaticContactRun(const TyreMesh& tm, const TyreDescription& tyre, const InflationSettings& inflation,
                    const ContactSettings& settings, const SupportDescription& support_description,
-                   Kinematics kinematics, StaticContactResult& result, const ProgressSink& progress)
+                   Kinematics kinematics, StaticContactResult& result, const ProgressSink& progress,
+                   const InflationResult* inflated)
       : tm_(tm), settings_(settings), result_(result), progress_(progress),
         support_(make_support(support_description)) {
-    // The geometrically linear solution is linearised about the nonlinear inflated state (the tyre's
-    // stiffness under load comes from its inflation: a linear theory about the unstressed state has no
-    // pressure stiffening at all), so the inflation is nonlinear in both theories.
-    InflationSettings inflate = inflation;
-    inflate.linear = false;
-    result_.inflation = run_inflation(tm, inflate, progress);
+    result_.inflation = inflated ? *inflated : inflate_for_contact(tm, inflation, progress);
     if (!result_.inflation.converged) throw std::runtime_error("inflation did not converge");
+    if (result_.inflation.kinematics != Kinematics::nonlinear || result_.inflation.pressure != inflation.pressure)
+      throw std::invalid_argument("a contact study needs the nonlinear inflated state at its pressure");
     result_.tread_points = tyre_tread_points(tm, tyre, settings.quadrature);
 
     DofMap dofs(tm.mesh.dof_count());
@@ -149,6 +161,7 @@ class StaticContactRun {
     ns.max_iterations = settings.max_newton_iterations;
     ns.residual_tolerance = settings.residual_tolerance;
     ns.reuse_factorization = settings.reuse_factorizations;
+    ns.stable_equilibrium = settings.equilibrium == ContactSettings::Equilibrium::stable;
     newton_ = std::make_unique<NewtonSolver>(*problem_, ns);
     path_ = std::make_unique<DeflectionPath>(*newton_, *contact_, settings, result_.inflation.displacement);
     // δz is measured from the undeformed tyre (MODEL.md §2), so the inflated tyre, grown by about
@@ -170,14 +183,18 @@ class StaticContactRun {
     const LoadPoint& p = result_.points.back();
     if (progress_)
       progress_(fmt::format("  δz {:6.2f} mm: Qz {:8.1f} N, patch {:5.1f} × {:5.1f} mm, pmax {:.3f} MPa "
-                            "({} contact, {} Newton iterations{}, {:.2f} s){}",
+                            "({} contact, {} Newton iterations{}, {:.2f} s){}{}",
                             deflection, p.patch.Qz_N, p.patch.patch_length_mm, p.patch.patch_width_mm,
                             p.patch.max_pressure_MPa, p.contact_iterations, p.newton_iterations,
                             step.cutbacks ? fmt::format(", {} cut-backs", step.cutbacks) : "", p.time_s,
                             stable(p.tangent_shift)
                                 ? ""
                                 : fmt::format(" UNSTABLE: the tangent needs a shift of {:.0e} (indefinite)",
-                                              p.tangent_shift)));
+                                              p.tangent_shift),
+                            p.escapes ? fmt::format(" PASSED AN INSTABILITY: left an unstable equilibrium "
+                                                    "(tangent shift {:.0e}) for this stable state",
+                                                    p.escaped_shift)
+                                      : ""));
     return true;
   }
 
@@ -204,6 +221,8 @@ class StaticContactRun {
     p.factorizations = factorizations;
     p.increments = step.increments;
     p.tangent_shift = step.last.tangent_shift;
+    p.escapes = step.last.escapes;
+    p.escaped_shift = step.last.escaped_shift;
     p.time_s = time;
     result_.points.push_back(p);
     result_.counters.cutbacks += step.cutbacks;
@@ -235,14 +254,15 @@ StaticContactResult empty_result(const TyreMesh& tm, const ContactSettings& cont
 
 StaticContactResult run_load_curve(const TyreMesh& tm, const TyreDescription& tyre,
                                    const InflationSettings& inflation, const ContactSettings& contact,
-                                   const LoadCurveStudy& study, const ProgressSink& progress) {
+                                   const LoadCurveStudy& study, const ProgressSink& progress,
+                                   const InflationResult* inflated) {
   const auto t0 = Clock::now();
   StaticContactResult result = empty_result(tm, contact, study);
   if (progress)
     progress(fmt::format("load curve '{}': {}, {} theory, δz to {} mm in {} steps", study.name,
                          support_label(study.support), study.linear ? "linear" : "nonlinear",
                          study.max_deflection, study.points));
-  StaticContactRun run(tm, tyre, inflation, contact, study.support, result.kinematics, result, progress);
+  StaticContactRun run(tm, tyre, inflation, contact, study.support, result.kinematics, result, progress, inflated);
   bool ok = true;
   for (int k = 1; k <= study.points && ok; ++k) ok = run.solve_at(study.max_deflection * k / study.points);
   run.finish();
@@ -253,14 +273,15 @@ StaticContactResult run_load_curve(const TyreMesh& tm, const TyreDescription& ty
 
 StaticContactResult run_footprint(const TyreMesh& tm, const TyreDescription& tyre,
                                   const InflationSettings& inflation, const ContactSettings& contact,
-                                  const FootprintStudy& study, const ProgressSink& progress) {
+                                  const FootprintStudy& study, const ProgressSink& progress,
+                                  const InflationResult* inflated) {
   const auto t0 = Clock::now();
   StaticContactResult result = empty_result(tm, contact, study);
   result.target_Qz_N = study.target_load;
   if (progress)
     progress(fmt::format("footprint '{}': {}, {} theory, Qz = {} N", study.name, support_label(study.support),
                          study.linear ? "linear" : "nonlinear", study.target_load));
-  StaticContactRun run(tm, tyre, inflation, contact, study.support, result.kinematics, result, progress);
+  StaticContactRun run(tm, tyre, inflation, contact, study.support, result.kinematics, result, progress, inflated);
   // Secant steps in δz towards the target load (at most kMaxStep per step while below it), then the
   // Illinois variant of regula falsi inside the bracket. Every state tried is a converged load point.
   constexpr double kFirstStep = 5.0, kMaxStep = 10.0;

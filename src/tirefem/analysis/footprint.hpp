@@ -26,9 +26,10 @@ struct PatchFigures {
 PatchFigures patch_figures(const std::vector<TreadPoint>& points, const std::vector<TreadPointState>& states,
                            bool half_model);
 
-// A converged state whose tangent needed more than this relative shift is an unstable equilibrium.
-inline constexpr double kUnstableShift = 1e-6;
-inline bool stable(double tangent_shift) { return tangent_shift <= kUnstableShift; }
+// A converged state whose tangent is not positive definite (it needed a shift) is an unstable
+// equilibrium. (A relative shift says little of the size of the instability: the bending modes of a
+// thin wall are ~1e-6 of the diagonal, so a buckling mode needs only a tiny shift.)
+inline bool stable(double tangent_shift) { return tangent_shift <= 0.0; }
 
 struct LoadPoint {
   double deflection_mm = 0.0;
@@ -38,9 +39,13 @@ struct LoadPoint {
   int factorizations = 0;
   int increments = 0;          // > 1 when the step was cut back
   // Stability of the converged state: the relative diagonal shift its tangent needed to be positive
-  // definite (0: stable; a shift at round-off level, ≤ 1e-6, counts as neutral; larger: unstable).
+  // definite (0: stable; > 0: unstable).
   double tangent_shift = 0.0;
   double time_s = 0.0;
+  // > 0: on the way to this point Newton left unstable equilibria (their tangent needed escaped_shift)
+  // for this stable state: the path passed an instability here (a wrinkle, a snap-through).
+  int escapes = 0;
+  double escaped_shift = 0.0;
 };
 
 // The converged state at one deflection, with what the reports need.
@@ -66,14 +71,23 @@ struct StaticContactResult {
   SolveCounters counters;            // contact phase only
 };
 
-// Inflates (theory of the study) and runs the load curve.
+// Runs the load curve from the nonlinear inflated state: `inflated` when given (a converged nonlinear
+// inflation of this mesh at inflation.pressure, shared by the studies of a run), else its own.
 StaticContactResult run_load_curve(const TyreMesh& tyre_mesh, const TyreDescription& tyre,
                                    const InflationSettings& inflation, const ContactSettings& contact,
-                                   const LoadCurveStudy& study, const ProgressSink& progress = {});
-// Inflates and finds δz with Qz = target (points: the deflections tried on the way, all converged).
+                                   const LoadCurveStudy& study, const ProgressSink& progress = {},
+                                   const InflationResult* inflated = nullptr);
+// Finds δz with Qz = target (points: the deflections tried on the way, all converged), from `inflated`
+// as above.
 StaticContactResult run_footprint(const TyreMesh& tyre_mesh, const TyreDescription& tyre,
                                   const InflationSettings& inflation, const ContactSettings& contact,
-                                  const FootprintStudy& study, const ProgressSink& progress = {});
+                                  const FootprintStudy& study, const ProgressSink& progress = {},
+                                  const InflationResult* inflated = nullptr);
+
+// The nonlinear inflated state the contact studies start from (both theories: the linear one is
+// linearised about it).
+InflationResult inflate_for_contact(const TyreMesh& tyre_mesh, const InflationSettings& inflation,
+                                    const ProgressSink& progress = {});
 
 // The tread points of a tyre mesh: elements within the tread (|s| ≤ tread end) on the lower half of the
 // tyre (|φ| ≤ 90°, the only part a support within the 40 mm range can reach), hp from the tread table.

@@ -314,7 +314,8 @@ RollingStateResult free_rolling(RollingModel& model, const RollingStudy& study, 
 }  // namespace
 
 RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const InflationSettings& inflation,
-                          const ContactSettings& contact, const RollingStudy& study, const ProgressSink& progress) {
+                          const ContactSettings& contact, const RollingStudy& study, const ProgressSink& progress,
+                          const InflationResult* inflated) {
   RollingResult r;
   r.name = study.name;
   r.support = study.support;
@@ -330,7 +331,7 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
   fs.support = study.support;
   fs.target_load = study.target_load;
   fs.load_tolerance = study.load_tolerance;
-  r.footprint = run_footprint(tm, tyre, inflation, contact, fs, progress);
+  r.footprint = run_footprint(tm, tyre, inflation, contact, fs, progress, inflated);
   if (!r.footprint.completed) {
     r.failure = "static footprint: " + r.footprint.failure;
     return r;

@@ -89,8 +89,10 @@ struct RollingResult {
   SolveCounters counters;                             // rolling phase (after the footprint)
 };
 
+// From `inflated` when given (see run_footprint), else from its own inflation.
 RollingResult run_rolling(const TyreMesh& tyre_mesh, const TyreDescription& tyre, const InflationSettings& inflation,
-                          const ContactSettings& contact, const RollingStudy& study, const ProgressSink& progress = {});
+                          const ContactSettings& contact, const RollingStudy& study, const ProgressSink& progress = {},
+                          const InflationResult* inflated = nullptr);
 
 // Solves the rolling problem at the forms' current settings from u (overwritten). Two-level: the contact
 // region and the friction plan are frozen together in each outer iteration; single loop: both follow

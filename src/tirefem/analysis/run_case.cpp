@@ -1,6 +1,9 @@
 #include "tirefem/analysis/run_case.hpp"
 
 #include <chrono>
+#include <map>
+#include <memory>
+#include <tuple>
 #include <optional>
 #include <stdexcept>
 
@@ -123,6 +126,42 @@ void write_rolling(const ResultsFolder& folder, PlotWriter& plots, const TyreMes
   plots.plot(n + "_belt_tension", circumferential_belt_plot(table));
 }
 
+// One tyre mesh and one nonlinear inflation per mesh setting, shared by all studies of a run: the
+// inflation is solved once per tyre and mesh, not once per study.
+class InflatedTyres {
+ public:
+  InflatedTyres(const Case& c, const ProgressSink& progress) : case_(c), progress_(progress) {}
+  const TyreMesh& mesh(const MeshSettings& m) {
+    Entry& e = entry(m);
+    if (!e.mesh) e.mesh = std::make_unique<TyreMesh>(build_tyre_mesh(case_.tyre, m));
+    return *e.mesh;
+  }
+  // The nonlinear inflated state of that mesh at the case's pressure.
+  const InflationResult& inflated(const MeshSettings& m) {
+    Entry& e = entry(m);
+    if (!e.inflated) {
+      e.inflated = inflate_for_contact(mesh(m), case_.inflation, progress_);
+      if (!e.inflated->converged)
+        throw std::runtime_error(fmt::format("inflation to {} MPa did not converge (after {} cut-backs)",
+                                             case_.inflation.pressure, e.inflated->counters.cutbacks));
+    }
+    return *e.inflated;
+  }
+  void adopt(const MeshSettings& m, const InflationResult& r) { entry(m).inflated = r; }
+
+ private:
+  struct Entry {
+    std::unique_ptr<TyreMesh> mesh;  // stable address: forms refer to it
+    std::optional<InflationResult> inflated;
+  };
+  Entry& entry(const MeshSettings& m) {
+    return entries_[{m.circumferential_elements, m.meridional_elements, m.half_model, m.circumferential_refinement}];
+  }
+  const Case& case_;
+  ProgressSink progress_;
+  std::map<std::tuple<int, int, bool, double>, Entry> entries_;
+};
+
 std::string incomplete_message(const StaticContactResult& r) {
   return fmt::format("'{}' stopped at δz = {:.3g} mm: {}", r.name, r.final_state.deflection_mm, r.failure);
 }
@@ -132,7 +171,8 @@ std::string incomplete_message(const StaticContactResult& r) {
 RunOutcome run_case(const Case& c, const RunOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   ResultsFolder folder(options.out_dir);
-  const TyreMesh tm = build_tyre_mesh(c.tyre, c.mesh);
+  InflatedTyres tyres(c, options.progress);
+  const TyreMesh& tm = tyres.mesh(c.mesh);
   const int equations = tm.mesh.dof_count() - static_cast<int>(tm.fixed_dofs.size());
   report(options.progress, fmt::format("{}: {} x {} {} model, {} elements, {} DOF ({} free)", c.title,
                                        c.mesh.circumferential_elements, c.mesh.meridional_elements,
@@ -156,6 +196,7 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     if (!r.converged)
       throw std::runtime_error(fmt::format("inflation to {} MPa did not converge (after {} cut-backs)",
                                            c.inflation.pressure, r.counters.cutbacks));
+    if (r.kinematics == Kinematics::nonlinear) tyres.adopt(c.mesh, r);  // the contact studies start here
     const auto elements = evaluate_element_results(tm, c.tyre, r.displacement, r.kinematics);
     const InflationSummary s = summarize_inflation(tm, r.displacement, elements);
     const CsvTable table = meridian_table(tm, c.tyre, r.displacement, elements);
@@ -188,7 +229,8 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
   std::vector<StaticContactResult> curves;
   toml::array curve_summaries, footprint_summaries, incomplete;
   for (const LoadCurveStudy& study : c.load_curves) {
-    StaticContactResult r = run_load_curve(tm, c.tyre, c.inflation, c.contact, study, options.progress);
+    StaticContactResult r =
+        run_load_curve(tm, c.tyre, c.inflation, c.contact, study, options.progress, &tyres.inflated(c.mesh));
     if (!r.completed) {
       report(options.progress, "warning: load curve " + incomplete_message(r) + " (converged points kept)");
       incomplete.push_back(incomplete_message(r));
@@ -209,7 +251,8 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     summary.insert("load_curves", std::move(curve_summaries));
   }
   for (const FootprintStudy& study : c.footprints) {
-    const StaticContactResult r = run_footprint(tm, c.tyre, c.inflation, c.contact, study, options.progress);
+    const StaticContactResult r =
+        run_footprint(tm, c.tyre, c.inflation, c.contact, study, options.progress, &tyres.inflated(c.mesh));
     write_csv(folder.path(r.name + "/load_points.csv"), load_curve_table(r));
     if (!r.completed) {
       report(options.progress, "warning: footprint " + incomplete_message(r));
@@ -231,15 +274,14 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
   if (!c.footprints.empty()) summary.insert("footprints", std::move(footprint_summaries));
   toml::array rolling_summaries;
   for (const RollingStudy& study : c.rolling) {
-    std::optional<TyreMesh> own_mesh;
-    if (study.mesh) {
-      own_mesh = build_tyre_mesh(c.tyre, *study.mesh);
+    const MeshSettings& settings = study.mesh.value_or(c.mesh);
+    const TyreMesh& mesh = tyres.mesh(settings);
+    if (study.mesh)
       report(options.progress, fmt::format("rolling '{}' on its own mesh: {} x {}, {} elements", study.name,
-                                           study.mesh->circumferential_elements, study.mesh->meridional_elements,
-                                           own_mesh->mesh.element_count()));
-    }
-    const TyreMesh& mesh = own_mesh ? *own_mesh : tm;
-    const RollingResult r = run_rolling(mesh, c.tyre, c.inflation, c.contact, study, options.progress);
+                                           settings.circumferential_elements, settings.meridional_elements,
+                                           mesh.mesh.element_count()));
+    const RollingResult r =
+        run_rolling(mesh, c.tyre, c.inflation, c.contact, study, options.progress, &tyres.inflated(settings));
     if (!r.completed) {
       const std::string m = fmt::format("rolling '{}': {}", r.name, r.failure);
       report(options.progress, "warning: " + m + " (converged states kept)");

@@ -104,6 +104,11 @@ struct ContactSettings {
   // Newton systems solved by GMRES preconditioned with an earlier factorisation while that converges
   // fast (NewtonSettings::reuse_factorization); false: every Newton iteration factorises.
   bool reuse_factorizations = false;
+  // Which equilibrium each load point converges to (NewtonSettings::stable_equilibrium): nearest (exact
+  // Newton steps from the prediction; the stability of each point is reported) or stable (every step
+  // lowers the energy, so an unstable equilibrium is left for a stable one: a wrinkled or buckled state).
+  enum class Equilibrium { nearest, stable };
+  Equilibrium equilibrium = Equilibrium::nearest;
 };
 
 // Load characteristic Qz(δz): the support pressed onto the inflated tyre in equal deflection steps.

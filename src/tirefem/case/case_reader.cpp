@@ -677,7 +677,7 @@ class Reader {
     const toml::table& t = table(n, path,
                                  {"quadrature", "iteration", "max_contact_iterations", "region_tolerance",
                                   "max_newton_iterations", "residual_tolerance", "provisional_tolerance",
-                                  "reuse_factorizations"});
+                                  "reuse_factorizations", "equilibrium"});
     ContactSettings s;
     opt_integer(t, path, "quadrature", s.quadrature);
     if (const toml::node* v = get(t, path, "iteration"))
@@ -689,6 +689,9 @@ class Reader {
     opt_number(t, path, "residual_tolerance", s.residual_tolerance, "");
     opt_number(t, path, "provisional_tolerance", s.provisional_tolerance, "");
     opt_bool(t, path, "reuse_factorizations", s.reuse_factorizations);
+    if (const toml::node* v = get(t, path, "equilibrium"))
+      s.equilibrium = static_cast<ContactSettings::Equilibrium>(
+          choice(*v, join(path, "equilibrium"), {"nearest", "stable"}));  // enum order
     return s;
   }
 

@@ -455,7 +455,7 @@ VtuMesh loaded_shell_vtu(const TyreMesh& tm, const TyreDescription& tyre, const 
 toml::table load_curve_summary(const StaticContactResult& r) {
   toml::table t;
   insert_study(t, r);
-  toml::array points, unstable;
+  toml::array points, unstable, passed;
   for (const LoadPoint& p : r.points) {
     toml::table pt;
     insert_patch(pt, p);
@@ -464,11 +464,17 @@ toml::table load_curve_summary(const StaticContactResult& r) {
     pt.insert("tangent_shift", p.tangent_shift);
     pt.insert("stable", stable(p.tangent_shift));
     if (!stable(p.tangent_shift)) unstable.push_back(p.deflection_mm);
+    if (p.escapes > 0) {
+      pt.insert("unstable_equilibria_left", p.escapes);
+      passed.push_back(toml::table{{"deflection_mm", p.deflection_mm}, {"tangent_shift", p.escaped_shift}});
+    }
     points.push_back(std::move(pt));
   }
   t.insert("points", std::move(points));
   // Where the path passed unstable equilibria (an indefinite converged tangent): the deflections.
   t.insert("unstable_points_deflection_mm", std::move(unstable));
+  // Where Newton left an unstable equilibrium for a stable state (equilibrium = "stable").
+  t.insert("instabilities_passed", std::move(passed));
   return t;
 }
 

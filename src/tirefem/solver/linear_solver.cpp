@@ -125,7 +125,7 @@ double SparseDirectSolver::factorize_shifted(const SparseMatrix& matrix) {
   return shift;
 }
 
-double SparseDirectSolver::factorize_inertia_corrected(const SparseMatrix& matrix) {
+bool SparseDirectSolver::factorize_cholesky(const SparseMatrix& matrix, double relative_shift) {
   auto& s = *impl_;
   if (!s.cholesky_analysed) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -133,41 +133,53 @@ double SparseDirectSolver::factorize_inertia_corrected(const SparseMatrix& matri
     s.cholesky_analysed = true;
     stats_.analysis_s += seconds_since(t0);
   }
-  const int n = static_cast<int>(matrix.cols());
-  if (static_cast<int>(s.diagonal_index.size()) != n || s.shifted.nonZeros() != matrix.nonZeros()) {
-    s.diagonal_index.assign(n, -1);
-    for (int j = 0; j < n; ++j)
-      for (int k = matrix.outerIndexPtr()[j]; k < matrix.outerIndexPtr()[j + 1]; ++k)
-        if (matrix.innerIndexPtr()[k] == j) s.diagonal_index[j] = k;
-    s.shifted = matrix;
-  }
-  constexpr double kFirstShift = 1e-6, kGrowth = 10.0, kLargestShift = 1e4;
-  // A DOF without any stiffness of its own still gets a shift, relative to the matrix's scale.
-  const double floor = 1e-8 * matrix.diagonal().cwiseAbs().mean();
-  // Start one decade below the last shift that worked (or at 0): the tangent along a path changes slowly.
-  double shift = s.last_relative_shift > 10 * kFirstShift ? s.last_relative_shift / kGrowth : 0.0;
-  while (true) {
+  const SparseMatrix* factored = &matrix;
+  if (relative_shift > 0) {
+    const int n = static_cast<int>(matrix.cols());
+    if (static_cast<int>(s.diagonal_index.size()) != n || s.shifted.nonZeros() != matrix.nonZeros()) {
+      s.diagonal_index.assign(n, -1);
+      for (int j = 0; j < n; ++j)
+        for (int k = matrix.outerIndexPtr()[j]; k < matrix.outerIndexPtr()[j + 1]; ++k)
+          if (matrix.innerIndexPtr()[k] == j) s.diagonal_index[j] = k;
+      s.shifted = matrix;
+    }
     const double* a = matrix.valuePtr();
     std::copy(a, a + matrix.nonZeros(), s.shifted.valuePtr());
-    if (shift > 0)
-      for (int j = 0; j < n; ++j) {
-        const int k = s.diagonal_index[j];
-        if (k >= 0) s.shifted.valuePtr()[k] += shift * std::max(std::abs(a[k]), floor);
-      }
-    const auto t0 = std::chrono::steady_clock::now();
-    s.cholesky.factorize(s.shifted);
-    stats_.factorization_s += seconds_since(t0);
-    ++stats_.factorizations;
-    if (s.cholesky.info() == Eigen::Success) break;
+    // A DOF without any stiffness of its own still gets a shift, relative to the matrix's scale.
+    const double floor = 1e-8 * matrix.diagonal().cwiseAbs().mean();
+    for (int j = 0; j < n; ++j) {
+      const int k = s.diagonal_index[j];
+      if (k >= 0) s.shifted.valuePtr()[k] += relative_shift * std::max(std::abs(a[k]), floor);
+    }
+    factored = &s.shifted;
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  s.cholesky.factorize(*factored);
+  stats_.factorization_s += seconds_since(t0);
+  ++stats_.factorizations;
+  if (s.cholesky.info() != Eigen::Success) {
     ++stats_.failed_cholesky;
+    return false;
+  }
+  if (relative_shift > 0) {
+    ++stats_.shifted_factorizations;
+    stats_.max_shift = std::max(stats_.max_shift, relative_shift);
+  }
+  s.factorized = true;
+  s.lu_active = false;
+  return true;
+}
+
+double SparseDirectSolver::factorize_inertia_corrected(const SparseMatrix& matrix) {
+  auto& s = *impl_;
+  constexpr double kFirstShift = 1e-6, kGrowth = 10.0, kLargestShift = 1e4;
+  // Start one decade below the last shift that worked (or at 0): the tangent along a path changes slowly.
+  double shift = s.last_relative_shift > 10 * kFirstShift ? s.last_relative_shift / kGrowth : 0.0;
+  while (!factorize_cholesky(matrix, shift)) {
     shift = shift == 0.0 ? kFirstShift : kGrowth * shift;
     if (shift > kLargestShift) throw std::runtime_error("no shift makes the tangent positive definite");
   }
-  if (shift > 0) ++stats_.shifted_factorizations;
-  stats_.max_shift = std::max(stats_.max_shift, shift);
   s.last_relative_shift = shift;
-  s.factorized = true;
-  s.lu_active = false;
   return shift;
 }
 

@@ -49,6 +49,9 @@ class SparseDirectSolver {
   // indefinite A, and solve() then gives a step that descends the energy (MODEL.md §8). Throws when even
   // σ = 1e4 fails.
   double factorize_inertia_corrected(const SparseMatrix& matrix);
+  // One Cholesky attempt of A + σ·diag|A| (σ = relative_shift ≥ 0): false when that is not positive
+  // definite (then there is no usable factorisation).
+  bool factorize_cholesky(const SparseMatrix& matrix, double relative_shift = 0.0);
 
   // A Cholesky factorisation of A + σI for use as a preconditioner (solve_preconditioned): σ = 0 when A
   // is positive definite, else the smallest tried of σ₀, 10σ₀, … (σ₀ = 1e-4 × mean |diagonal|, starting

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include <fmt/format.h>
@@ -13,6 +14,16 @@ namespace {
 // shift (the roll-up cantilever's 1e-5 needed ~20 iterations); beyond it LU is cheaper.
 constexpr int kMaxExactStepIterations = 25;
 constexpr double kMaxShiftForKrylov = 1e-4;
+// Nearest-equilibrium steps on a tangent that a relative shift this small makes positive definite (a
+// slightly indefinite or singular one, e.g. the roll-up cantilever past 0.8 of a turn) are found by
+// GMRES on that factorisation rather than by LU.
+constexpr double kRoundOffShift = 1e-6;
+// Leaving a saddle: inverse iterations for the direction of negative curvature, its largest nodal
+// displacement (mm), and how many saddles one solve may leave.
+constexpr int kInverseIterations = 40;
+constexpr double kPushSize = 0.05;
+constexpr int kMaxEscapes = 3;
+constexpr double kNegativeCurvature = 1e-10;
 constexpr double kMaxExtension = 16.0;  // Π'(1) > this × |Π'(0)|: the step overshot the energy's minimum
 }  // namespace
 
@@ -26,7 +37,6 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
   const bool potential = problem_.has_potential();
   NewtonOutcome out;
   out.final_shift = shift_;
-  lu_only_ = false;
   double increment_norm = 0.0;
   double first_residual = -1.0;
   double energy = 0.0, first_energy = 0.0;  // |Δu·R| of the last and of the first iteration
@@ -87,6 +97,27 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
     if (residual_ok && (increment_ok || it == 0 ||
                         out.relative_residual <= 0.01 * settings_.residual_tolerance)) {
       out.converged = true;
+      // After LU steps the converged state's stability is not known yet: one Cholesky attempt on its
+      // tangent tells (and lets the next solve start with Cholesky again if it is stable).
+      if (lu_mode_ && it > 0) {
+        lu_mode_ = !linear_.factorize_cholesky(problem_.system().tangent(), 0.0);
+        if (!lu_mode_) shift_ = 0.0;
+      }
+      // A stable equilibrium is sought: test the converged state's own tangent; at a saddle (the
+      // prediction kept the symmetry of the state, so the exact steps never felt the unstable mode)
+      // push off along the direction of negative curvature, to the side that lowers the energy, and
+      // go on descending.
+      if (settings_.stable_equilibrium && potential && inertia_corrected_) {
+        shift_ = linear_.factorize_inertia_corrected(problem_.system().tangent());
+        if (shift_ > 0 && out.escapes < kMaxEscapes && push_off_saddle(u, load_factor)) {
+          ++out.escapes;
+          out.escaped_shift = std::max(out.escaped_shift, shift_);
+          out.converged = false;
+          pending = false;
+          increment_norm = std::numeric_limits<double>::infinity();
+          continue;
+        }
+      }
       out.final_shift = shift_;
       return out;
     }
@@ -155,22 +186,73 @@ double NewtonSolver::energy_line_search(const Eigen::VectorXd& base, const Eigen
   }
 }
 
+bool NewtonSolver::push_off_saddle(Eigen::VectorXd& u, double load_factor) {
+  const DofMap& dofs = problem_.dofs();
+  const SparseMatrix& tangent = problem_.system().tangent();
+  // Inverse iteration with the shifted factorisation (A + σD)⁻¹D: the eigenvector of the most negative
+  // eigenvalue of D⁻¹A (D = diag|A|) grows fastest, since σ only just exceeds it.
+  const Eigen::VectorXd d = tangent.diagonal().cwiseAbs().cwiseMax(1e-8 * tangent.diagonal().cwiseAbs().mean());
+  Eigen::VectorXd v(tangent.cols());
+  std::uint64_t seed = 88172645463325252ull;  // a fixed start: the same push on every run
+  for (Eigen::Index i = 0; i < v.size(); ++i) {
+    seed ^= seed << 13, seed ^= seed >> 7, seed ^= seed << 17;
+    v[i] = static_cast<double>(seed % 2001) / 1000.0 - 1.0;
+  }
+  bool negative = false;
+  for (int k = 0; k < kInverseIterations && !negative; ++k) {
+    v = linear_.solve(Eigen::VectorXd(d.cwiseProduct(v)));
+    v /= v.cwiseAbs().maxCoeff();
+    // Negative curvature beyond round-off (relative to the diagonal's measure of v): a saddle.
+    negative = v.allFinite() && v.dot(tangent * v) < -kNegativeCurvature * v.dot(d.cwiseProduct(v));
+  }
+  if (!negative) return false;
+  const Eigen::VectorXd base = u;
+  double best = 0.0;
+  // The push is sized down until the energy falls (at a saddle it falls ∝ t² along v, until the
+  // nonlinear terms take over).
+  for (double size = kPushSize; size >= 1e-4 * kPushSize && best == 0.0; size *= 0.1)
+    for (double sign : {1.0, -1.0}) {
+      Eigen::VectorXd trial = base;
+      dofs.scatter_add(sign * size * v, trial);
+      const std::optional<EnergyChange> e = problem_.energy_change(base, trial, load_factor);
+      if (e && e->change < best && std::abs(e->change) > 1e-12 * e->magnitude) best = e->change, u = trial;
+    }
+  return best < 0.0;
+}
+
 bool NewtonSolver::solve_inertia_corrected(const Eigen::VectorXd& rhs, Eigen::VectorXd& du) {
   const SparseMatrix& tangent = problem_.system().tangent();
-  if (lu_only_) {  // strongly indefinite at the last iteration of this solve: exact steps by LU directly
+  const auto lu_step = [&] {
     linear_.factorize_lu(tangent);
     du = linear_.solve(rhs);
     return du.allFinite();
+  };
+  if (!settings_.stable_equilibrium) {
+    // Nearest equilibrium: exact steps. Cholesky when the tangent is positive definite, or nearly so (a
+    // shift at round-off level, with GMRES for the exact step); LU otherwise, and from then on until a
+    // converged state is found stable again (solve() checks that).
+    if (lu_mode_) return lu_step();
+    if (linear_.factorize_cholesky(tangent, 0.0)) {
+      shift_ = 0.0;
+      du = linear_.solve(rhs);
+      return du.allFinite();
+    }
+    shift_ = kRoundOffShift;
+    if (linear_.factorize_cholesky(tangent, kRoundOffShift) &&
+        linear_.solve_preconditioned(tangent, rhs, du, settings_.krylov_tolerance, kMaxExactStepIterations))
+      return true;
+    shift_ = 10 * kRoundOffShift;  // a lower bound: the tangent is indefinite beyond round-off
+    lu_mode_ = true;
+    return lu_step();
   }
+  // Stable equilibrium: the smallest shift that makes the tangent positive definite gives a descent
+  // step; the exact step (GMRES on that factorisation while the shift is small, else LU) is taken
+  // instead when it also descends the energy (rhs = −R), since far from a stable state (an unstressed
+  // membrane under follower pressure) the shifted step only creeps. The energy line search checks either.
   shift_ = linear_.factorize_inertia_corrected(tangent);
   du = linear_.solve(rhs);
-  if (shift_ == 0.0 || !du.allFinite()) return du.allFinite();
-  // Indefinite tangent. The exact Newton step heads for the nearest equilibrium and converges fast (far
-  // from a stable state, e.g. an unstressed membrane under follower pressure, the shifted step only
-  // creeps): found by GMRES on the shifted factorisation, or by LU when that does not converge (a
-  // strongly indefinite tangent). When a stable equilibrium is sought it is taken only if it descends
-  // the energy (rhs = −R), else the shifted step, always a descent direction; the energy line search
-  // checks either.
+  if (shift_ == 0.0 || !du.allFinite() || !problem_.has_potential()) return du.allFinite();
+  const Eigen::VectorXd shifted = du;
   Eigen::VectorXd exact;
   bool ok = shift_ <= kMaxShiftForKrylov &&
             linear_.solve_preconditioned(tangent, rhs, exact, settings_.krylov_tolerance, kMaxExactStepIterations);
@@ -178,11 +260,8 @@ bool NewtonSolver::solve_inertia_corrected(const Eigen::VectorXd& rhs, Eigen::Ve
     linear_.factorize_lu(tangent);
     exact = linear_.solve(rhs);
     ok = exact.allFinite();
-    // The shifted factorisation cannot serve this tangent: LU for the rest of this solve (the shift
-    // found stays the stability figure), unless a stable equilibrium is sought (it needs the shift).
-    lu_only_ = !settings_.stable_equilibrium;
   }
-  if (ok && (!settings_.stable_equilibrium || !problem_.has_potential() || exact.dot(rhs) > 0)) du = exact;
+  du = ok && exact.dot(rhs) > 0 ? exact : shifted;
   return true;
 }
 

@@ -61,6 +61,8 @@ struct NewtonOutcome {
                              // the solution is indefinite, an unstable equilibrium
   int backtracks = 0;        // energy line-search cut-backs
   int extensions = 0;        // shifted steps extended along a falling energy
+  int escapes = 0;           // unstable equilibria left (stable-equilibrium mode)
+  double escaped_shift = 0.0;  // the largest shift of the tangent at an equilibrium left
 };
 
 class NewtonSolver {
@@ -79,6 +81,9 @@ class NewtonSolver {
  private:
   // `fresh`: factorise the current tangent even if a reused factorisation would do.
   bool solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du, bool fresh);
+  // At an unstable equilibrium (the last factorisation, of its tangent, needed a shift): moves u along
+  // the direction of negative curvature to the side that lowers the energy. False when none is found.
+  bool push_off_saddle(Eigen::VectorXd& u, double load_factor);
   // Inertia-corrected factorisation of the current tangent and the step from it.
   bool solve_inertia_corrected(const Eigen::VectorXd& rhs, Eigen::VectorXd& du);
   // Cuts back the step base → base + du (residual r_base there) until the energy falls by the Armijo
@@ -93,7 +98,7 @@ class NewtonSolver {
   bool refresh_ = false;  // the last reused factorisation needed many GMRES iterations: factorise next
   bool inertia_corrected_ = false;  // symmetric problem solved with inertia correction
   double shift_ = 0.0;              // relative shift of the factorisation behind the last step
-  bool lu_only_ = false;            // strongly indefinite in this solve: exact steps by LU
+  bool lu_mode_ = false;  // nearest-equilibrium steps on an indefinite tangent: LU until a stable state
 };
 
 struct LoadSteppingSettings {
