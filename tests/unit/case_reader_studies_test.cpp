@@ -87,12 +87,14 @@ TEST(CaseReaderStudies, DefaultsWhenKeysAreOmitted) {
   // the other values of the enum-like keys
   const Case other = parse_case(
       tyre_with("[contact]\niteration = \"single_loop\"\nquadrature = 8\nregion_tolerance = 3\n"
+                "equilibrium = \"stable\"\n"
                 "[[footprint]]\nname = \"f-1\"\nsupport = { kind = \"plane\" }\ntheory = \"linear\"\n"
                 "target_load = 5000\nload_tolerance = 0.05\n"),
       "case.toml");
   EXPECT_EQ(other.contact.iteration, ContactSettings::Iteration::single_loop);
   EXPECT_EQ(other.contact.quadrature, 8);
   EXPECT_EQ(other.contact.region_tolerance, 3);
+  EXPECT_EQ(other.contact.equilibrium, ContactSettings::Equilibrium::stable);
   EXPECT_TRUE(other.footprints[0].linear);
   EXPECT_EQ(other.footprints[0].target_load, 5000.0);
   EXPECT_EQ(other.footprints[0].load_tolerance, 0.05);
@@ -194,6 +196,9 @@ TEST(CaseReaderStudies, EnumLikeStringsListTheAcceptedValues) {
   EXPECT_EQ(error_of(text), where(text, "\"three_level\"") +
                                 "contact.iteration: must be \"two_level\" or \"single_loop\" (got "
                                 "\"three_level\")");
+  text = edited("equilibrium = \"stable\"", "equilibrium = \"lowest\"");
+  EXPECT_EQ(error_of(text), where(text, "\"lowest\"") +
+                                "contact.equilibrium: must be \"nearest\" or \"stable\" (got \"lowest\")");
   text = edited("theory = \"linear\"", "theory = \"small\"");
   EXPECT_EQ(error_of(text), where(text, "\"small\"") +
                                 "load_curve[2].theory: must be \"nonlinear\" or \"linear\" (got \"small\")");

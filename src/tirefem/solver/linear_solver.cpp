@@ -39,15 +39,19 @@ SparseDirectSolver::SparseDirectSolver(bool symmetric, bool sticky_lu) : impl_(s
 
 SparseDirectSolver::~SparseDirectSolver() = default;
 
+void SparseDirectSolver::analyse_cholesky(const SparseMatrix& matrix) {
+  auto& s = *impl_;
+  if (s.cholesky_analysed) return;
+  const auto t0 = std::chrono::steady_clock::now();
+  s.cholesky.analyzePattern(matrix);
+  s.cholesky_analysed = true;
+  stats_.analysis_s += seconds_since(t0);
+}
+
 void SparseDirectSolver::factorize(const SparseMatrix& matrix) {
   auto& s = *impl_;
   if (!s.use_lu) {
-    if (!s.cholesky_analysed) {
-      const auto t0 = std::chrono::steady_clock::now();
-      s.cholesky.analyzePattern(matrix);
-      s.cholesky_analysed = true;
-      stats_.analysis_s += seconds_since(t0);
-    }
+    analyse_cholesky(matrix);
     const auto t0 = std::chrono::steady_clock::now();
     s.cholesky.factorize(matrix);
     stats_.factorization_s += seconds_since(t0);
@@ -99,12 +103,7 @@ bool SparseDirectSolver::uses_lu() const { return impl_->use_lu; }
 
 double SparseDirectSolver::factorize_shifted(const SparseMatrix& matrix) {
   auto& s = *impl_;
-  if (!s.cholesky_analysed) {
-    const auto t0 = std::chrono::steady_clock::now();
-    s.cholesky.analyzePattern(matrix);
-    s.cholesky_analysed = true;
-    stats_.analysis_s += seconds_since(t0);
-  }
+  analyse_cholesky(matrix);
   const double mean_diagonal = matrix.diagonal().cwiseAbs().mean();
   double shift = s.last_shift;
   while (true) {
@@ -127,12 +126,7 @@ double SparseDirectSolver::factorize_shifted(const SparseMatrix& matrix) {
 
 bool SparseDirectSolver::factorize_cholesky(const SparseMatrix& matrix, double relative_shift) {
   auto& s = *impl_;
-  if (!s.cholesky_analysed) {
-    const auto t0 = std::chrono::steady_clock::now();
-    s.cholesky.analyzePattern(matrix);
-    s.cholesky_analysed = true;
-    stats_.analysis_s += seconds_since(t0);
-  }
+  analyse_cholesky(matrix);
   const SparseMatrix* factored = &matrix;
   if (relative_shift > 0) {
     const int n = static_cast<int>(matrix.cols());

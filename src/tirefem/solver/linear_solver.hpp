@@ -67,6 +67,7 @@ class SparseDirectSolver {
   const LinearSolverStats& stats() const { return stats_; }
 
  private:
+  void analyse_cholesky(const SparseMatrix& matrix);  // once: the pattern never changes
   struct Impl;
   std::unique_ptr<Impl> impl_;
   LinearSolverStats stats_;
