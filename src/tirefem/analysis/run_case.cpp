@@ -126,11 +126,47 @@ void write_rolling(const ResultsFolder& folder, PlotWriter& plots, const TyreMes
   plots.plot(n + "_belt_tension", circumferential_belt_plot(table));
 }
 
+// Wall time per phase of the run, printed at the end and kept in summary.json. A shared inflation is a
+// phase of its own, taken out of the study during which it was solved.
+class PhaseTimes {
+ public:
+  using Clock = std::chrono::steady_clock;
+  void begin(std::string name) {
+    name_ = std::move(name);
+    start_ = Clock::now();
+    nested_ = 0.0;
+  }
+  void end() { phases_.emplace_back(name_, seconds(start_) - nested_); }
+  void nested(std::string name, double s) {
+    phases_.emplace_back(std::move(name), s);
+    nested_ += s;
+  }
+  void report(const ProgressSink& progress, double total) const {
+    if (!progress) return;
+    progress("time per phase:");
+    for (const auto& [name, s] : phases_) progress(fmt::format("  {:<40} {:9.2f} s", name, s));
+    progress(fmt::format("  {:<40} {:9.2f} s", "total", total));
+  }
+  toml::array table() const {
+    toml::array a;
+    for (const auto& [name, s] : phases_) a.push_back(toml::table{{"phase", name}, {"time_s", s}});
+    return a;
+  }
+
+ private:
+  static double seconds(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+  std::string name_;
+  Clock::time_point start_;
+  double nested_ = 0.0;
+  std::vector<std::pair<std::string, double>> phases_;
+};
+
 // One tyre mesh and one nonlinear inflation per mesh setting, shared by all studies of a run: the
 // inflation is solved once per tyre and mesh, not once per study.
 class InflatedTyres {
  public:
-  InflatedTyres(const Case& c, const ProgressSink& progress) : case_(c), progress_(progress) {}
+  InflatedTyres(const Case& c, const ProgressSink& progress, PhaseTimes& times)
+      : case_(c), progress_(progress), times_(times) {}
   const TyreMesh& mesh(const MeshSettings& m) {
     Entry& e = entry(m);
     if (!e.mesh) e.mesh = std::make_unique<TyreMesh>(build_tyre_mesh(case_.tyre, m));
@@ -141,6 +177,8 @@ class InflatedTyres {
     Entry& e = entry(m);
     if (!e.inflated) {
       e.inflated = inflate_for_contact(mesh(m), case_.inflation, progress_);
+      times_.nested(fmt::format("inflation ({} x {}, shared)", m.circumferential_elements, m.meridional_elements),
+                    e.inflated->counters.wall_s);
       if (!e.inflated->converged)
         throw std::runtime_error(fmt::format("inflation to {} MPa did not converge (after {} cut-backs)",
                                              case_.inflation.pressure, e.inflated->counters.cutbacks));
@@ -159,6 +197,7 @@ class InflatedTyres {
   }
   const Case& case_;
   ProgressSink progress_;
+  PhaseTimes& times_;
   std::map<std::tuple<int, int, bool, double>, Entry> entries_;
 };
 
@@ -171,7 +210,9 @@ std::string incomplete_message(const StaticContactResult& r) {
 RunOutcome run_case(const Case& c, const RunOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   ResultsFolder folder(options.out_dir);
-  InflatedTyres tyres(c, options.progress);
+  PhaseTimes times;
+  times.begin("mesh");
+  InflatedTyres tyres(c, options.progress, times);
   const TyreMesh& tm = tyres.mesh(c.mesh);
   const int equations = tm.mesh.dof_count() - static_cast<int>(tm.fixed_dofs.size());
   report(options.progress, fmt::format("{}: {} x {} {} model, {} elements, {} DOF ({} free)", c.title,
@@ -191,7 +232,9 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
                                            {"meridional_elements", c.mesh.meridional_elements},
                                            {"model", c.mesh.half_model ? "half" : "full"}}}};
 
+  times.end();
   if (c.inflation.enabled) {
+    times.begin("inflation");
     const InflationResult r = run_inflation(tm, c.inflation, options.progress);
     if (!r.converged)
       throw std::runtime_error(fmt::format("inflation to {} MPa did not converge (after {} cut-backs)",
@@ -223,12 +266,14 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
                        "carcass {:.2f} N, belt {:.2f} N ({} Newton iterations, {:.2f} s)",
                        s.crown_radius_growth_mm, s.section_width_growth_mm, s.max_carcass_cord_force_N,
                        s.max_belt_cord_force_N, r.counters.newton_iterations, r.counters.wall_s));
+    times.end();
   }
 
   PlotWriter plots(folder, options.progress);
   std::vector<StaticContactResult> curves;
   toml::array curve_summaries, footprint_summaries, incomplete;
   for (const LoadCurveStudy& study : c.load_curves) {
+    times.begin("load curve '" + study.name + "'");
     StaticContactResult r =
         run_load_curve(tm, c.tyre, c.inflation, c.contact, study, options.progress, &tyres.inflated(c.mesh));
     if (!r.completed) {
@@ -243,6 +288,7 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     r.final_state.displacement.resize(0);  // keep the curve, not its last state
     r.inflation.displacement.resize(0);
     curves.push_back(std::move(r));
+    times.end();
   }
   if (!curves.empty()) {
     std::vector<const StaticContactResult*> list;
@@ -251,6 +297,7 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     summary.insert("load_curves", std::move(curve_summaries));
   }
   for (const FootprintStudy& study : c.footprints) {
+    times.begin("footprint '" + study.name + "'");
     const StaticContactResult r =
         run_footprint(tm, c.tyre, c.inflation, c.contact, study, options.progress, &tyres.inflated(c.mesh));
     write_csv(folder.path(r.name + "/load_points.csv"), load_curve_table(r));
@@ -270,10 +317,12 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     t.insert("solver", counters_table(r.counters));
     add_krylov(*t["solver"].as_table(), r.counters);
     footprint_summaries.push_back(std::move(t));
+    times.end();
   }
   if (!c.footprints.empty()) summary.insert("footprints", std::move(footprint_summaries));
   toml::array rolling_summaries;
   for (const RollingStudy& study : c.rolling) {
+    times.begin("rolling '" + study.name + "'");
     const MeshSettings& settings = study.mesh.value_or(c.mesh);
     const TyreMesh& mesh = tyres.mesh(settings);
     if (study.mesh)
@@ -293,15 +342,21 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     t.insert("solver", counters_table(r.counters));
     add_krylov(*t["solver"].as_table(), r.counters);
     rolling_summaries.push_back(std::move(t));
+    times.end();
   }
   if (!c.rolling.empty()) summary.insert("rolling", std::move(rolling_summaries));
   const bool completed = incomplete.empty();
   summary.insert("completed", completed);
   if (!incomplete.empty()) summary.insert("incomplete", std::move(incomplete));
 
-  summary.insert("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  times.begin("summary and results folder");
+  const double before_writing = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  summary.insert("phases", times.table());
+  summary.insert("wall_time_s", before_writing);
   write_json(folder.path("summary.json"), summary);
   folder.commit();
+  times.end();
+  times.report(options.progress, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   return {options.out_dir / "summary.json", completed};
 }
 
