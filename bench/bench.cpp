@@ -36,6 +36,11 @@ void print_counters(const std::string& name, const tirefem::SolveCounters& c) {
     fmt::print("  reused factorisations {:>8}   (GMRES: {} iterations, {} given up, {:.3f} s)\n",
                c.krylov_solves, c.krylov_iterations, c.krylov_failures, c.krylov_s);
   fmt::print("  total                 {:>8.3f} s\n", c.wall_s);
+  // How much of the time the counted work explains (1 = all of it; more = time spent elsewhere: solves,
+  // GMRES, energy evaluations, bookkeeping).
+  const double counted = c.factorization_s + c.assembly_s;
+  if (counted > 0)
+    fmt::print("  total / (factorisations + assemblies) {:.2f}\n", c.wall_s / counted);
 }
 
 void print_rolling_counts(const std::string& name, const tirefem::RollingSolveCounts& c) {
