@@ -26,6 +26,10 @@ void print_counters(const std::string& name, const tirefem::SolveCounters& c) {
   fmt::print("  Newton iterations     {:>8}\n", c.newton_iterations);
   fmt::print("  factorisations        {:>8}   ({})\n", c.factorizations,
              c.used_lu ? "UMFPACK LU" : "CHOLMOD supernodal Cholesky");
+  if (c.failed_cholesky + c.shifted_factorizations > 0)
+    fmt::print("  of which               {:>7} Cholesky attempts that found the tangent indefinite, {} "
+               "with an inertia shift\n",
+               c.failed_cholesky, c.shifted_factorizations);
   fmt::print("  assemblies            {:>8}\n", c.assemblies);
   fmt::print("  assembly time         {:>8.3f} s\n", c.assembly_s);
   fmt::print("  symbolic analysis     {:>8.3f} s\n", c.analysis_s);

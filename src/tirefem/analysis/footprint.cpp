@@ -189,8 +189,7 @@ class StaticContactRun {
                             step.cutbacks ? fmt::format(", {} cut-backs", step.cutbacks) : "", p.time_s,
                             stable(p.tangent_shift)
                                 ? ""
-                                : fmt::format(" UNSTABLE: the tangent needs a shift of {:.0e} (indefinite)",
-                                              p.tangent_shift),
+                                : std::string(" UNSTABLE: its tangent is indefinite"),
                             p.escapes ? fmt::format(" PASSED AN INSTABILITY: left an unstable equilibrium "
                                                     "(tangent shift {:.0e}) for this stable state",
                                                     p.escaped_shift)

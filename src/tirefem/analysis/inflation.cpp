@@ -34,6 +34,8 @@ void add_counters(SolveCounters& c, const NewtonSolver& newton, const NonlinearP
   c.factorization_s += l.factorization_s;
   c.solve_s += l.solve_s;
   c.used_lu = c.used_lu || l.used_lu;
+  c.failed_cholesky += l.failed_cholesky;
+  c.shifted_factorizations += l.shifted_factorizations;
   c.krylov_solves += l.krylov_solves;
   c.krylov_failures += l.krylov_failures;
   c.krylov_iterations += l.krylov_iterations;

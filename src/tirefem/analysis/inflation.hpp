@@ -19,6 +19,8 @@ struct SolveCounters {
   double solve_s = 0.0;
   double wall_s = 0.0;
   bool used_lu = false;
+  int failed_cholesky = 0;         // factorisations that found the tangent indefinite
+  int shifted_factorizations = 0;  // Cholesky with an inertia shift
   int krylov_solves = 0;      // Newton systems solved by GMRES on a reused factorisation
   int krylov_failures = 0;
   int krylov_iterations = 0;

@@ -95,7 +95,14 @@ ContactSolveOutcome solve_rolling_state(NewtonSolver& newton, WinklerContactForm
   newton.set_max_iterations(std::min(max_iterations, kSingleLoopIterations));
   const NewtonOutcome n = newton.solve(u, 1.0);
   newton.set_max_iterations(max_iterations);
-  if (n.converged) return {true, 1, n.iterations, 0, n.final_shift, 0, 0.0, {}};
+  if (n.converged) {
+    ContactSolveOutcome out;
+    out.converged = true;
+    out.contact_iterations = 1;
+    out.newton_iterations = n.iterations;
+    out.tangent_shift = n.final_shift;
+    return out;
+  }
   if (!u.allFinite() || !(n.relative_residual < 1.0)) u = start;
   ContactSolveOutcome out = two_level(newton, contact, friction, u, settings);
   out.newton_iterations += n.iterations;

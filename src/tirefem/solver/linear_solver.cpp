@@ -21,8 +21,6 @@ struct SparseDirectSolver::Impl {
   bool lu_active = false;  // the last factorisation is the LU one
   bool factorized = false;
   int cholesky_failures = 0;
-  bool sticky_lu = true;
-  double last_shift = 0.0;
   double last_relative_shift = 0.0;  // of factorize_inertia_corrected
   std::vector<int> diagonal_index;   // position of each diagonal entry in the matrix's value array
   SparseMatrix shifted;
@@ -30,11 +28,10 @@ struct SparseDirectSolver::Impl {
   Eigen::UmfPackLU<SparseMatrix> lu;
 };
 
-SparseDirectSolver::SparseDirectSolver(bool symmetric, bool sticky_lu) : impl_(std::make_unique<Impl>()) {
+SparseDirectSolver::SparseDirectSolver(bool symmetric) : impl_(std::make_unique<Impl>()) {
   // "Not positive definite" is an answer here (inertia correction, LU fallback), not a warning to print.
   impl_->cholesky.cholmod().print = 0;
   impl_->use_lu = !symmetric;
-  impl_->sticky_lu = sticky_lu;
 }
 
 SparseDirectSolver::~SparseDirectSolver() = default;
@@ -63,7 +60,8 @@ void SparseDirectSolver::factorize(const SparseMatrix& matrix) {
       return;
     }
     // Not positive definite: LU for this matrix; after two such matrices in a row, LU from now on.
-    if (++s.cholesky_failures >= 2 && s.sticky_lu) s.use_lu = true;
+    ++stats_.failed_cholesky;
+    if (++s.cholesky_failures >= 2) s.use_lu = true;
   }
   factorize_lu(matrix);
 }
@@ -101,29 +99,6 @@ Eigen::VectorXd SparseDirectSolver::solve(const Eigen::VectorXd& rhs) {
 bool SparseDirectSolver::has_factorization() const { return impl_->factorized; }
 bool SparseDirectSolver::uses_lu() const { return impl_->use_lu; }
 
-double SparseDirectSolver::factorize_shifted(const SparseMatrix& matrix) {
-  auto& s = *impl_;
-  analyse_cholesky(matrix);
-  const double mean_diagonal = matrix.diagonal().cwiseAbs().mean();
-  double shift = s.last_shift;
-  while (true) {
-    const auto t0 = std::chrono::steady_clock::now();
-    s.cholesky.setShift(shift);
-    s.cholesky.factorize(matrix);
-    s.cholesky.setShift(0.0);
-    stats_.factorization_s += seconds_since(t0);
-    ++stats_.factorizations;
-    if (s.cholesky.info() == Eigen::Success) break;
-    shift = shift == 0.0 ? 1e-4 * mean_diagonal : 10.0 * shift;
-    if (shift > mean_diagonal) throw std::runtime_error("no shift makes the tangent positive definite");
-  }
-  if (shift > 0) ++stats_.shifted_factorizations;
-  s.last_shift = shift;
-  s.factorized = true;
-  s.lu_active = false;
-  return shift;
-}
-
 bool SparseDirectSolver::factorize_cholesky(const SparseMatrix& matrix, double relative_shift) {
   auto& s = *impl_;
   analyse_cholesky(matrix);
@@ -155,10 +130,7 @@ bool SparseDirectSolver::factorize_cholesky(const SparseMatrix& matrix, double r
     ++stats_.failed_cholesky;
     return false;
   }
-  if (relative_shift > 0) {
-    ++stats_.shifted_factorizations;
-    stats_.max_shift = std::max(stats_.max_shift, relative_shift);
-  }
+  if (relative_shift > 0) ++stats_.shifted_factorizations;
   s.factorized = true;
   s.lu_active = false;
   return true;

@@ -15,9 +15,9 @@ struct LinearSolverStats {
   double factorization_s = 0.0;
   double solve_s = 0.0;
   bool used_lu = false;
-  int shifted_factorizations = 0;  // of an indefinite matrix (inertia correction or preconditioner)
-  int failed_cholesky = 0;         // attempts that found the matrix not positive definite
-  double max_shift = 0.0;          // largest relative shift σ of an inertia-corrected factorisation
+  int shifted_factorizations = 0;  // Cholesky of an indefinite matrix with a diagonal shift
+  int failed_cholesky = 0;         // attempts that found the matrix not positive definite (counted in
+                                   // factorizations too: they cost nearly as much)
   int krylov_solves = 0;      // successful preconditioned GMRES solves (a factorisation reused)
   int krylov_failures = 0;    // GMRES solves given up (followed by a new factorisation)
   int krylov_iterations = 0;  // over all of them
@@ -26,10 +26,9 @@ struct LinearSolverStats {
 
 class SparseDirectSolver {
  public:
-  // `sticky_lu`: after two symmetric matrices in a row that are not positive definite, use LU for all
-  // later ones (saves the failed Cholesky attempts when the problem stays indefinite); otherwise every
-  // factorisation tries Cholesky first.
-  explicit SparseDirectSolver(bool symmetric, bool sticky_lu = true);
+  // factorize(): after two symmetric matrices in a row that are not positive definite, LU for all later
+  // ones (saves the failed Cholesky attempts when the problem stays indefinite).
+  explicit SparseDirectSolver(bool symmetric);
   ~SparseDirectSolver();
   SparseDirectSolver(const SparseDirectSolver&) = delete;
   SparseDirectSolver& operator=(const SparseDirectSolver&) = delete;
@@ -53,11 +52,6 @@ class SparseDirectSolver {
   // definite (then there is no usable factorisation).
   bool factorize_cholesky(const SparseMatrix& matrix, double relative_shift = 0.0);
 
-  // A Cholesky factorisation of A + σI for use as a preconditioner (solve_preconditioned): σ = 0 when A
-  // is positive definite, else the smallest tried of σ₀, 10σ₀, … (σ₀ = 1e-4 × mean |diagonal|, starting
-  // from the last shift that worked) that makes it so. Returns σ; throws when no σ up to the mean
-  // diagonal works.
-  double factorize_shifted(const SparseMatrix& matrix);
 
   // Solves A x = b by GMRES preconditioned with the last factorisation (of an earlier, nearby matrix):
   // the iteration that lets load steps reuse a factorisation. Returns false (x undefined) when the

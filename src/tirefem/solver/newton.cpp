@@ -24,12 +24,12 @@ constexpr int kInverseIterations = 40;
 constexpr double kPushSize = 0.05;
 constexpr int kMaxEscapes = 3;
 constexpr double kNegativeCurvature = 1e-10;
-constexpr double kMaxExtension = 16.0;  // Π'(1) > this × |Π'(0)|: the step overshot the energy's minimum
+constexpr double kMaxExtension = 16.0;  // at most this many times a shifted step along a falling energy
 }  // namespace
 
 NewtonSolver::NewtonSolver(NonlinearProblem& problem, NewtonSettings settings)
-    : problem_(problem), settings_(settings), linear_(problem.symmetric(), /*sticky_lu=*/!settings.reuse_factorization),
-      inertia_corrected_(settings.inertia_correction && problem.symmetric()) {}
+    : problem_(problem), settings_(settings), linear_(problem.symmetric()),
+      inertia_corrected_(problem.symmetric()) {}
 
 NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
   const DofMap& dofs = problem_.dofs();
@@ -135,7 +135,6 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
     const bool fresh = it > 0 && rn > previous_residual;
     previous_residual = rn;
     if (!solve_linear(-r, du, fresh)) return out;
-    out.max_shift = std::max(out.max_shift, shift_);
     out.final_shift = shift_;
     // Line search on ‖R‖ (problems without a potential, when enabled): far from the solution (an
     // unstressed membrane under follower pressure) a full step can overshoot by orders of magnitude.
@@ -291,22 +290,14 @@ bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du,
     if (linear_.solve_preconditioned(tangent, rhs, du, settings_.krylov_tolerance,
                                      settings_.max_krylov_iterations)) {
       refresh_ = lu && linear_.stats().krylov_iterations - before > settings_.refresh_after_krylov_iterations;
-      // With a potential the step must descend (rhs = −R): an exact step towards a saddle is replaced
-      // by the inertia-corrected one.
-      if (!(inertia_corrected_ && problem_.has_potential() && du.dot(rhs) <= 0)) {
+      // When a stable equilibrium is sought the step must descend (rhs = −R): an exact step towards a
+      // saddle is replaced by the inertia-corrected one.
+      const bool ascends = settings_.stable_equilibrium && problem_.has_potential() && du.dot(rhs) <= 0;
+      if (!ascends) {
         shift_ = 0.0;
         return true;
       }
     }
-    if (lu || inertia_corrected_) return direct();
-    if (linear_.factorize_shifted(tangent) == 0.0) {
-      du = linear_.solve(rhs);
-      return du.allFinite();
-    }
-    // Indefinite tangent: the shifted factorisation preconditions GMRES; LU if even that fails.
-    if (linear_.solve_preconditioned(tangent, rhs, du, settings_.krylov_tolerance,
-                                     4 * settings_.max_krylov_iterations))
-      return true;
     return direct();
   } catch (const std::runtime_error&) {
     return false;

@@ -32,11 +32,8 @@ struct NewtonSettings {
   // also slow Newton down).
   int refresh_after_krylov_iterations = 8;
   double krylov_tolerance = 1e-3;  // relative to the preconditioned residual (inexact Newton)
-  // Symmetric problems: an indefinite tangent is factorised by Cholesky with the smallest diagonal shift
-  // that makes it positive definite (inertia correction) instead of by LU; the step then descends the
-  // energy where the problem has one.
-  bool inertia_correction = true;
-  // Which equilibrium Newton converges to, for problems with a potential (MODEL.md §8):
+  // Symmetric problems are factorised by Cholesky, an indefinite tangent with a diagonal shift (inertia
+  // correction). Which equilibrium Newton converges to, for problems with a potential (MODEL.md §8):
   //  - false (nearest): exact Newton steps (found on the inertia-corrected factorisation by GMRES, or by
   //    LU when the tangent is strongly indefinite), so Newton converges to the equilibrium next to its
   //    start, stable or not; the stability of the result is reported (NewtonOutcome::final_shift).
@@ -56,9 +53,10 @@ struct NewtonOutcome {
   int iterations = 0;              // linear solves
   double relative_residual = 0.0;  // final ‖R_free‖ / (λ‖F‖)
   std::vector<double> residual_history;  // relative residual before each iteration
-  double max_shift = 0.0;    // largest relative inertia shift the tangent needed in this solve
-  double final_shift = 0.0;  // that of the last factorisation: > 0 means the tangent at (or next to)
-                             // the solution is indefinite, an unstable equilibrium
+  // Relative diagonal shift the last factorisation needed (of the converged state's tangent when it was
+  // tested): > 0 means an indefinite tangent, an unstable equilibrium (after LU steps, 1e-5 stands for
+  // "indefinite" without its size).
+  double final_shift = 0.0;
   int backtracks = 0;        // energy line-search cut-backs
   int extensions = 0;        // shifted steps extended along a falling energy
   int escapes = 0;           // unstable equilibria left (stable-equilibrium mode)
@@ -96,7 +94,7 @@ class NewtonSolver {
   SparseDirectSolver linear_;
   int total_iterations_ = 0;
   bool refresh_ = false;  // the last reused factorisation needed many GMRES iterations: factorise next
-  bool inertia_corrected_ = false;  // symmetric problem solved with inertia correction
+  bool inertia_corrected_ = false;  // a symmetric problem: Cholesky with inertia correction
   double shift_ = 0.0;              // relative shift of the factorisation behind the last step
   bool lu_mode_ = false;  // nearest-equilibrium steps on an indefinite tangent: LU until a stable state
 };
