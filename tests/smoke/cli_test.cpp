@@ -4,6 +4,7 @@
 // The run uses tests/smoke/coarse_case.toml, the example on a 36 × 10 mesh with 4 points per load curve
 // and all its studies (three load curves, one footprint): a few seconds instead of the minutes the
 // example's 120 × 46 mesh takes. A separate test keeps the two cases in step (same studies and settings).
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <cstdlib>
@@ -11,6 +12,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -25,9 +27,10 @@ struct CliRun {
   std::string output;
 };
 
-CliRun run_cli(const std::string& args) {
+// Runs a shell command, its stdout and stderr captured together.
+CliRun run_cli_command(const std::string& command) {
   const fs::path log = fs::temp_directory_path() / ("tirefem_cli_" + std::to_string(::getpid()) + ".log");
-  const std::string cmd = std::string(TIREFEM_CLI) + " " + args + " > " + log.string() + " 2>&1";
+  const std::string cmd = "(" + command + ") > " + log.string() + " 2>&1";
   const int status = std::system(cmd.c_str());
   std::ifstream in(log);
   std::stringstream ss;
@@ -35,6 +38,8 @@ CliRun run_cli(const std::string& args) {
   fs::remove(log);
   return {WEXITSTATUS(status), ss.str()};
 }
+
+CliRun run_cli(const std::string& args) { return run_cli_command(std::string(TIREFEM_CLI) + " " + args); }
 
 fs::path scratch(const std::string& name) {
   const fs::path p = fs::temp_directory_path() / ("tirefem_smoke_" + std::to_string(::getpid())) / name;
@@ -225,6 +230,143 @@ TEST(Cli, BadCaseNamesTheFieldAndWritesNothing) {
 TEST(Cli, MissingFileIsAnError) {
   const CliRun r = run_cli("run /nonexistent/case.toml");
   EXPECT_NE(r.exit_code, 0);
+}
+
+
+// ---------------------------------------------------------------------------------- the output folder
+// Cases cut from the coarse case: up to its first study (the inflation alone, about a second), plus one
+// load curve whose contact Newton may stop at once (a study that stops short).
+std::string coarse_up_to_first_study() {
+  const std::string text = read_text(kCoarseCase);
+  return text.substr(0, text.find("[[load_curve]]"));
+}
+
+fs::path write_case(const fs::path& file, const std::string& text) {
+  fs::create_directories(file.parent_path());
+  std::ofstream(file) << text;
+  return file;
+}
+
+// `tirefem ARGS` run in folder `cwd`.
+CliRun run_cli_in(const fs::path& cwd, const std::string& args) {
+  return run_cli_command("cd '" + cwd.string() + "' && " + std::string(TIREFEM_CLI) + " " + args);
+}
+
+bool has_hidden_leftovers(const fs::path& dir) {
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().filename().string().find(".tmp-") != std::string::npos ||
+        e.path().filename().string().find(".old-") != std::string::npos)
+      return true;
+  return false;
+}
+
+TEST(CliOutputFolder, NeverDeletesTheUsersFiles) {
+  const fs::path work = scratch("folder_policy");
+  const fs::path case_file = write_case(work / "case.toml", coarse_up_to_first_study());
+  std::ofstream(work / "notes.txt") << "mine\n";
+
+  // A new folder, then the same folder again with a file of the user's added: the file stays.
+  ASSERT_EQ(run_cli_in(work, "run case.toml --out res -q").exit_code, 0);
+  EXPECT_TRUE(fs::exists(work / "res" / ".tirefem-results"));
+  std::ofstream(work / "res" / "my_notes.txt") << "mine\n";
+  const CliRun again = run_cli_in(work, "run case.toml --out res -q");
+  EXPECT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_EQ(read_text(work / "res" / "my_notes.txt"), "mine\n");
+  EXPECT_TRUE(fs::exists(work / "res" / "summary.json"));
+
+  // The current folder, its parent, the case file's folder and a file are refused before solving.
+  for (const std::string out : std::vector<std::string>{".", "..", "./", work.string(), "case.toml", "notes.txt"}) {
+    const CliRun r = run_cli_in(work, "run case.toml -q --force --out " + out);
+    EXPECT_EQ(r.exit_code, 1) << out << ": " << r.output;
+    EXPECT_NE(r.output.find("--out"), std::string::npos) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << "one line: " << r.output;
+  }
+  EXPECT_EQ(read_text(work / "notes.txt"), "mine\n");
+  EXPECT_TRUE(fs::exists(work / "case.toml"));
+
+  // A folder tirefem did not write: refused; with --force the results go beside the user's files.
+  fs::create_directories(work / "user" / "sub");
+  std::ofstream(work / "user" / "data.txt") << "mine\n";
+  EXPECT_EQ(run_cli_in(work, "run case.toml -q --out user").exit_code, 1);
+  EXPECT_EQ(run_cli_in(work, "run case.toml -q --out user --force").exit_code, 0);
+  EXPECT_EQ(read_text(work / "user" / "data.txt"), "mine\n");
+  EXPECT_TRUE(fs::exists(work / "user" / "sub"));
+  EXPECT_TRUE(fs::exists(work / "user" / "summary.json"));
+  EXPECT_FALSE(has_hidden_leftovers(work));
+  fs::remove_all(work);
+}
+
+TEST(CliOutputFolder, StoppedShortRunLeavesTheLastResultsAndSaysWhere) {
+  const fs::path work = scratch("stopped_short");
+  std::string text = coarse_up_to_first_study();
+  write_case(work / "case.toml", text);
+  ASSERT_EQ(run_cli_in(work, "run case.toml --out res -q").exit_code, 0);
+  const std::string complete_summary = read_text(work / "res" / "summary.json");
+  // One Newton iteration per contact solve cannot converge: the load curve stops short at its first point.
+  const std::string key = "max_newton_iterations = 25";
+  const auto contact = text.find("[contact]");
+  ASSERT_NE(contact, std::string::npos);
+  const auto pos = text.find(key, contact);
+  ASSERT_NE(pos, std::string::npos) << "the coarse case no longer sets contact." << key;
+  text.replace(pos, key.size(), "max_newton_iterations = 1");
+  text += "\n[[load_curve]]\nname = \"plane\"\nsupport = { kind = \"plane\" }\nmax_deflection = 10.0\npoints = 2\n";
+  write_case(work / "short.toml", text);
+  const CliRun r = run_cli_in(work, "run short.toml --out res -q");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("res-incomplete"), std::string::npos) << r.output;
+  EXPECT_EQ(read_text(work / "res" / "summary.json"), complete_summary) << "the complete results were replaced";
+  const std::string partial = read_text(work / "res-incomplete" / "summary.json");
+  EXPECT_EQ(top_level_value(partial, "completed"), "false");
+  EXPECT_NE(partial.find("plane"), std::string::npos);
+  EXPECT_TRUE(fs::exists(work / "res-incomplete" / "inflation_meridian.csv")) << "the converged inflation is kept";
+  EXPECT_FALSE(has_hidden_leftovers(work));
+  fs::remove_all(work);
+}
+
+TEST(CliOutputFolder, InterruptCleansUpAndExitsWith3) {
+  const fs::path work = scratch("interrupt");
+  fs::create_directories(work);
+  fs::copy_file(kCoarseCase, work / "case.toml", fs::copy_options::overwrite_existing);
+  // Interrupt once the contact studies are under way (after the inflation), as a user's Ctrl-C would.
+  const std::string script =
+      "cd '" + work.string() + "' && (" + TIREFEM_CLI + " run case.toml --out res > log.txt 2>&1 & pid=$!; "
+      "for i in $(seq 600); do grep -q \"load curve\" log.txt 2>/dev/null && break; sleep 0.1; done; "
+      "kill -INT $pid; wait $pid; echo \"exit=$?\")";
+  const CliRun r = run_cli_command(script);
+  EXPECT_NE(r.output.find("exit=3"), std::string::npos) << r.output << read_text(work / "log.txt");
+  EXPECT_NE(read_text(work / "log.txt").find("interrupted"), std::string::npos);
+  EXPECT_FALSE(fs::exists(work / "res"));
+  EXPECT_FALSE(has_hidden_leftovers(work)) << "the temporary folder was left behind";
+  fs::remove_all(work);
+}
+
+TEST(Cli, MissingOrFolderCaseFileIsAOneLineError) {
+  for (const std::string args : std::vector<std::string>{"check /nonexistent/case.toml", "run /nonexistent/case.toml", "check /tmp"}) {
+    const CliRun r = run_cli(args);
+    EXPECT_EQ(r.exit_code, 1) << args;
+    EXPECT_EQ(r.output.rfind("tirefem: error: case file", 0), 0u) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  }
+}
+
+// A tyre without plies has no cord tension to plot: the report is skipped with a note, the solve is kept.
+TEST(Cli, ATyreWithoutPliesWritesItsResults) {
+  const fs::path work = scratch("no_plies");
+  std::string text = coarse_up_to_first_study();
+  auto replace_all = [&](const std::string& from, const std::string& to) {
+    for (auto p = text.find(from); p != std::string::npos; p = text.find(from, p + to.size()))
+      text.replace(p, from.size(), to);
+  };
+  replace_all(R"(inner = { plies = ["carcass", "carcass"] })", "inner = { rubber = { E = 40.0, nu = 0.49, thickness = 2.0 } }");
+  replace_all(R"(outer = { plies = ["belt1", "belt2"] })", "outer = { rubber = { E = 60.0, nu = 0.49, thickness = 2.4 } }");
+  ASSERT_EQ(text.find("{ plies = ["), std::string::npos) << "the coarse case's zones changed";
+  write_case(work / "case.toml", text);
+  const CliRun r = run_cli_in(work, "run case.toml --out res");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("skipped"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::exists(work / "res" / "inflation_meridian.csv"));
+  EXPECT_NE(read_text(work / "res" / "summary.json").find("skipped_reports"), std::string::npos);
+  fs::remove_all(work);
 }
 
 }  // namespace

@@ -121,8 +121,10 @@ DeflectionPath::Step DeflectionPath::advance_to(double deflection, int max_cutba
     step.newton_iterations += outcome.newton_iterations;
     if (!outcome.converged) {
       if (step.cutbacks >= max_cutbacks) {
-        step.failure = fmt::format("δz = {:.4g} mm: {} (after {} cut-backs)", target, outcome.failure,
-                                   step.cutbacks);
+        step.failure = fmt::format(
+            "δz = {:.4g} mm: {} (after {} cut-backs); try more load points, a larger "
+            "contact.max_newton_iterations or contact.max_contact_iterations",
+            target, outcome.failure, step.cutbacks);
         contact_.set_deflection(states_.back().deflection);
         return step;
       }

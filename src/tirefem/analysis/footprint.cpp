@@ -167,7 +167,10 @@ class StaticContactRun {
     // δz is measured from the undeformed tyre (MODEL.md §2), so the inflated tyre, grown by about
     // 0.5 mm, already presses on the support at δz = 0: the first load point is solved like the others.
     if (!solve_at(0.0))
-      throw std::runtime_error(fmt::format("contact at δz = 0 did not converge: {}", result_.failure));
+      throw std::runtime_error(fmt::format(
+          "the first contact state (δz = 0) did not converge: {}; check tyre.tread.stiffness (kp) and the "
+          "contact settings (max_newton_iterations, residual_tolerance)",
+          result_.failure));
   }
 
   // Solves at δz and records the load point; false (and result_.failure) when it does not converge.
@@ -290,7 +293,20 @@ StaticContactResult run_footprint(const TyreMesh& tm, const TyreDescription& tyr
   int lo_side_repeats = 0, hi_side_repeats = 0;
   double next = kFirstStep;
   bool ok = false;
+  // A physical bound on the search: the section height (tread surface at the crown to the bead). Beyond
+  // it the rim would be on the road.
+  const double section_height = tm.axis_z - tm.profile.point(tm.profile.s_end())[1];
   for (int evaluation = 0; evaluation < 40; ++evaluation) {
+    if (next > section_height) {
+      if (result.points.empty() || result.points.back().deflection_mm >= section_height) {
+        result.failure = fmt::format(
+            "Qz = {} N not reached: Qz is {:.0f} N at δz = {:.1f} mm, the section height (crown to bead); "
+            "lower target_load",
+            target, result.points.empty() ? 0.0 : result.points.back().patch.Qz_N, section_height);
+        break;
+      }
+      next = section_height;
+    }
     if (!run.solve_at(next)) break;
     const double q = run.last_Qz();
     if (std::abs(q - target) <= tolerance) {

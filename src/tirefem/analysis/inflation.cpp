@@ -70,6 +70,14 @@ InflationResult run_inflation(const TyreMesh& tm, const InflationSettings& setti
   add_counters(c, newton, *problem);
   result.converged = path.completed;
   result.steps = path.steps;
+  if (!path.completed)
+    result.failure = fmt::format(
+        "inflation to {} MPa did not converge: reached {:.0f}% of the pressure, then Newton stopped at a "
+        "residual of {:.1e} after {} cut-backs; check tyre.profile.points (inside out? crossing itself?), "
+        "the plies' cord_modulus and thickness and tyre.interlayer.thickness, or raise "
+        "inflation.max_newton_iterations",
+        settings.pressure, 100.0 * (path.steps.empty() ? 0.0 : path.steps.back().load_factor),
+        path.last_failure.relative_residual, path.cutbacks);
 
   c.load_steps = static_cast<int>(path.steps.size());
   c.cutbacks = path.cutbacks;

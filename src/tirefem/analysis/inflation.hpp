@@ -1,5 +1,7 @@
 #pragma once
 // Inflation of the tyre on its rim: the pressure is ramped from 0 to p by load stepping (Newton inside).
+#include <string>
+
 #include "tirefem/case/case.hpp"
 #include "tirefem/element/strain_component.hpp"
 #include "tirefem/solver/newton.hpp"
@@ -37,6 +39,7 @@ struct InflationResult {
   Eigen::VectorXd displacement;
   std::vector<LoadStepRecord> steps;
   SolveCounters counters;
+  std::string failure;  // when not converged: where it stopped, the residual, the fields to check
 };
 
 InflationResult run_inflation(const TyreMesh& tyre_mesh, const InflationSettings& settings,

@@ -48,14 +48,35 @@ void add_krylov(toml::table& t, const SolveCounters& c) {
   t.insert("krylov_iterations", c.krylov_iterations);
 }
 
-// Plots are optional (gnuplot may be missing): warn once.
-class PlotWriter {
+// Writes the plots (gnuplot may be missing: warn once) and guards every report: a report that cannot be
+// made (e.g. no ply, hence no cord tension to plot) is skipped with a note, never a failure that would
+// discard the solve.
+class ReportWriter {
  public:
-  PlotWriter(const ResultsFolder& folder, const ProgressSink& progress) : folder_(folder), progress_(progress) {}
-  void plot(const std::string& stem, const Plot& p) { note(write_plot(folder_.path("plots/" + stem), p)); }
+  ReportWriter(const ResultsFolder& folder, const ProgressSink& progress) : folder_(folder), progress_(progress) {}
+  void plot(const std::string& stem, const Plot& p) {
+    if (p.series.empty()) return skip(stem, "nothing to plot");
+    note(write_plot(folder_.path("plots/" + stem), p));
+  }
   void heatmap(const std::string& stem, const HeatMap& m) { note(write_heatmap(folder_.path("plots/" + stem), m)); }
+  // Runs `write`; an exception (other than an interrupt) skips the rest of that report with a note.
+  template <class F>
+  void attempt(const std::string& report_name, F&& write) {
+    try {
+      write();
+    } catch (const RunInterrupted&) {
+      throw;
+    } catch (const std::exception& e) {
+      skip(report_name, e.what());
+    }
+  }
+  const std::vector<std::string>& skipped() const { return skipped_; }
 
  private:
+  void skip(const std::string& name, const std::string& why) {
+    skipped_.push_back(fmt::format("{}: {}", name, why));
+    report(progress_, fmt::format("note: report '{}' skipped: {}", name, why));
+  }
   void note(bool rendered) {
     if (!rendered && !warned_) report(progress_, "warning: gnuplot not found, plots written as scripts only");
     warned_ = warned_ || !rendered;
@@ -63,11 +84,12 @@ class PlotWriter {
   const ResultsFolder& folder_;
   ProgressSink progress_;
   bool warned_ = false;
+  std::vector<std::string> skipped_;
 };
 
 // Everything about one loaded state: VTU of the shell and the support, the tread points, the pressure
 // maps, the cord strains under the patch centre (Fig. 5) and the belt tension round the equator (Fig. 8).
-void write_loaded_state(const ResultsFolder& folder, PlotWriter& plots, const TyreMesh& tm, const Case& c,
+void write_loaded_state(const ResultsFolder& folder, ReportWriter& plots, const TyreMesh& tm, const Case& c,
                         const StaticContactResult& r) {
   const std::string& n = r.name;
   const auto loaded = evaluate_element_results(tm, c.tyre, r.final_state.displacement, r.kinematics);
@@ -91,7 +113,7 @@ void write_loaded_state(const ResultsFolder& folder, PlotWriter& plots, const Ty
 // A rolling study: the states and the sweep as tables, per state the tread points (CSV and point cloud),
 // the loaded shell and the traction map (Fig. 7), and the belt tension of all states together with the
 // inflated and the static one (Fig. 8).
-void write_rolling(const ResultsFolder& folder, PlotWriter& plots, const TyreMesh& tm, const Case& c,
+void write_rolling(const ResultsFolder& folder, ReportWriter& plots, const TyreMesh& tm, const Case& c,
                    const RollingResult& r) {
   const std::string& n = r.name;
   write_csv(folder.path(n + "/states.csv"), rolling_states_table(r));
@@ -179,9 +201,7 @@ class InflatedTyres {
       e.inflated = inflate_for_contact(mesh(m), case_.inflation, progress_);
       times_.nested(fmt::format("inflation ({} x {}, shared)", m.circumferential_elements, m.meridional_elements),
                     e.inflated->counters.wall_s);
-      if (!e.inflated->converged)
-        throw std::runtime_error(fmt::format("inflation to {} MPa did not converge (after {} cut-backs)",
-                                             case_.inflation.pressure, e.inflated->counters.cutbacks));
+      if (!e.inflated->converged) throw std::runtime_error(e.inflated->failure);
     }
     return *e.inflated;
   }
@@ -209,13 +229,18 @@ std::string incomplete_message(const StaticContactResult& r) {
 
 RunOutcome run_case(const Case& c, const RunOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
-  ResultsFolder folder(options.out_dir);
+  ResultsFolder folder(options.out_dir, {.force = options.force, .case_file = c.source});
+  // Every solver reports progress between steps: that is where a requested stop takes effect.
+  const ProgressSink progress = [&](const std::string& message) {
+    if (options.stop_requested && !folder.committed() && options.stop_requested()) throw RunInterrupted();
+    if (options.progress) options.progress(message);
+  };
   PhaseTimes times;
   times.begin("mesh");
-  InflatedTyres tyres(c, options.progress, times);
+  InflatedTyres tyres(c, progress, times);
   const TyreMesh& tm = tyres.mesh(c.mesh);
   const int equations = tm.mesh.dof_count() - static_cast<int>(tm.fixed_dofs.size());
-  report(options.progress, fmt::format("{}: {} x {} {} model, {} elements, {} DOF ({} free)", c.title,
+  report(progress, fmt::format("{}: {} x {} {} model, {} elements, {} DOF ({} free)", c.title,
                                        c.mesh.circumferential_elements, c.mesh.meridional_elements,
                                        c.mesh.half_model ? "half" : "full", tm.mesh.element_count(),
                                        tm.mesh.dof_count(), equations));
@@ -233,22 +258,36 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
                                            {"model", c.mesh.half_model ? "half" : "full"}}}};
 
   times.end();
+  ReportWriter plots(folder, progress);
+  toml::array incomplete;
+  // A study that throws (e.g. its first contact state does not converge) stops short like one whose load
+  // path ends early; the other studies go on.
+  auto study = [&](const std::string& name, auto&& run) {
+    times.begin(name);
+    try {
+      run();
+    } catch (const RunInterrupted&) {
+      throw;
+    } catch (const std::exception& e) {
+      const std::string m = fmt::format("{} failed: {}", name, e.what());
+      report(progress, "warning: " + m);
+      incomplete.push_back(m);
+    }
+    times.end();
+  };
   if (c.inflation.enabled) {
     times.begin("inflation");
-    const InflationResult r = run_inflation(tm, c.inflation, options.progress);
-    if (!r.converged)
-      throw std::runtime_error(fmt::format("inflation to {} MPa did not converge (after {} cut-backs)",
-                                           c.inflation.pressure, r.counters.cutbacks));
+    const InflationResult r = run_inflation(tm, c.inflation, progress);
+    if (!r.converged) throw std::runtime_error(r.failure);
     if (r.kinematics == Kinematics::nonlinear) tyres.adopt(c.mesh, r);  // the contact studies start here
     const auto elements = evaluate_element_results(tm, c.tyre, r.displacement, r.kinematics);
     const InflationSummary s = summarize_inflation(tm, r.displacement, elements);
     const CsvTable table = meridian_table(tm, c.tyre, r.displacement, elements);
     write_csv(folder.path("inflation_meridian.csv"), table);
     write_vtu(folder.path("inflation.vtu"), shell_vtu(tm, c.tyre, r.displacement, elements));
-    bool rendered = true;
-    for (const auto& [name, plot] : meridian_plots(table, tm, r.displacement))
-      rendered = write_plot(folder.path("plots/inflation_" + name), plot) && rendered;
-    if (!rendered) report(options.progress, "warning: gnuplot not found, plots written as scripts only");
+    plots.attempt("inflation plots", [&] {
+      for (const auto& [name, plot] : meridian_plots(table, tm, r.displacement)) plots.plot("inflation_" + name, plot);
+    });
     toml::table inflation{{"pressure_MPa", c.inflation.pressure},
                           {"theory", c.inflation.linear ? "linear" : "nonlinear"},
                           {"converged", r.converged},
@@ -261,7 +300,7 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
                           {"newton_iterations", r.counters.newton_iterations}};
     inflation.insert("solver", counters_table(r.counters));
     summary.insert("inflation", std::move(inflation));
-    report(options.progress,
+    report(progress,
            fmt::format("inflation: crown radius +{:.3f} mm, section width {:+.3f} mm, max cord force "
                        "carcass {:.2f} N, belt {:.2f} N ({} Newton iterations, {:.2f} s)",
                        s.crown_radius_growth_mm, s.section_width_growth_mm, s.max_carcass_cord_force_N,
@@ -269,95 +308,97 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     times.end();
   }
 
-  PlotWriter plots(folder, options.progress);
   std::vector<StaticContactResult> curves;
-  toml::array curve_summaries, footprint_summaries, incomplete;
-  for (const LoadCurveStudy& study : c.load_curves) {
-    times.begin("load curve '" + study.name + "'");
-    StaticContactResult r =
-        run_load_curve(tm, c.tyre, c.inflation, c.contact, study, options.progress, &tyres.inflated(c.mesh));
-    if (!r.completed) {
-      report(options.progress, "warning: load curve " + incomplete_message(r) + " (converged points kept)");
-      incomplete.push_back(incomplete_message(r));
-    }
-    write_csv(folder.path("load_curve_" + r.name + ".csv"), load_curve_table(r));
-    toml::table t = load_curve_summary(r);
-    t.insert("solver", counters_table(r.counters));
-    add_krylov(*t["solver"].as_table(), r.counters);
-    curve_summaries.push_back(std::move(t));
-    r.final_state.displacement.resize(0);  // keep the curve, not its last state
-    r.inflation.displacement.resize(0);
-    curves.push_back(std::move(r));
-    times.end();
+  toml::array curve_summaries, footprint_summaries, rolling_summaries;
+  for (const LoadCurveStudy& study_case : c.load_curves) {
+    study("load curve '" + study_case.name + "'", [&] {
+      StaticContactResult r =
+          run_load_curve(tm, c.tyre, c.inflation, c.contact, study_case, progress, &tyres.inflated(c.mesh));
+      if (!r.completed) {
+        report(progress, "warning: load curve " + incomplete_message(r) + " (converged points kept)");
+        incomplete.push_back(incomplete_message(r));
+      }
+      write_csv(folder.path("load_curve_" + r.name + ".csv"), load_curve_table(r));
+      toml::table t = load_curve_summary(r);
+      t.insert("solver", counters_table(r.counters));
+      add_krylov(*t["solver"].as_table(), r.counters);
+      curve_summaries.push_back(std::move(t));
+      r.final_state.displacement.resize(0);  // keep the curve, not its last state
+      r.inflation.displacement.resize(0);
+      curves.push_back(std::move(r));
+    });
   }
   if (!curves.empty()) {
     std::vector<const StaticContactResult*> list;
     for (const auto& r : curves) list.push_back(&r);
-    plots.plot("load_characteristic", load_characteristic_plot(list));
+    plots.attempt("load characteristic", [&] { plots.plot("load_characteristic", load_characteristic_plot(list)); });
     summary.insert("load_curves", std::move(curve_summaries));
   }
-  for (const FootprintStudy& study : c.footprints) {
-    times.begin("footprint '" + study.name + "'");
-    const StaticContactResult r =
-        run_footprint(tm, c.tyre, c.inflation, c.contact, study, options.progress, &tyres.inflated(c.mesh));
-    write_csv(folder.path(r.name + "/load_points.csv"), load_curve_table(r));
-    if (!r.completed) {
-      report(options.progress, "warning: footprint " + incomplete_message(r));
-      incomplete.push_back(incomplete_message(r));
-    } else {
-      write_loaded_state(folder, plots, tm, c, r);
-      report(options.progress,
-             fmt::format("footprint '{}': Qz {:.1f} N at δz {:.2f} mm, patch {:.1f} × {:.1f} mm, area {:.0f} mm², "
-                         "pmax {:.3f} MPa",
-                         r.name, r.points.back().patch.Qz_N, r.final_state.deflection_mm,
-                         r.points.back().patch.patch_length_mm, r.points.back().patch.patch_width_mm,
-                         r.points.back().patch.contact_area_mm2, r.points.back().patch.max_pressure_MPa));
-    }
-    toml::table t = footprint_summary(r);
-    t.insert("solver", counters_table(r.counters));
-    add_krylov(*t["solver"].as_table(), r.counters);
-    footprint_summaries.push_back(std::move(t));
-    times.end();
+  for (const FootprintStudy& study_case : c.footprints) {
+    study("footprint '" + study_case.name + "'", [&] {
+      const StaticContactResult r =
+          run_footprint(tm, c.tyre, c.inflation, c.contact, study_case, progress, &tyres.inflated(c.mesh));
+      write_csv(folder.path(r.name + "/load_points.csv"), load_curve_table(r));
+      if (!r.completed) {
+        report(progress, "warning: footprint " + incomplete_message(r));
+        incomplete.push_back(incomplete_message(r));
+      } else {
+        plots.attempt("footprint '" + r.name + "'", [&] { write_loaded_state(folder, plots, tm, c, r); });
+        report(progress,
+               fmt::format("footprint '{}': Qz {:.1f} N at δz {:.2f} mm, patch {:.1f} × {:.1f} mm, area {:.0f} "
+                           "mm², pmax {:.3f} MPa",
+                           r.name, r.points.back().patch.Qz_N, r.final_state.deflection_mm,
+                           r.points.back().patch.patch_length_mm, r.points.back().patch.patch_width_mm,
+                           r.points.back().patch.contact_area_mm2, r.points.back().patch.max_pressure_MPa));
+      }
+      toml::table t = footprint_summary(r);
+      t.insert("solver", counters_table(r.counters));
+      add_krylov(*t["solver"].as_table(), r.counters);
+      footprint_summaries.push_back(std::move(t));
+    });
   }
   if (!c.footprints.empty()) summary.insert("footprints", std::move(footprint_summaries));
-  toml::array rolling_summaries;
-  for (const RollingStudy& study : c.rolling) {
-    times.begin("rolling '" + study.name + "'");
-    const MeshSettings& settings = study.mesh.value_or(c.mesh);
-    const TyreMesh& mesh = tyres.mesh(settings);
-    if (study.mesh)
-      report(options.progress, fmt::format("rolling '{}' on its own mesh: {} x {}, {} elements", study.name,
-                                           settings.circumferential_elements, settings.meridional_elements,
-                                           mesh.mesh.element_count()));
-    const RollingResult r =
-        run_rolling(mesh, c.tyre, c.inflation, c.contact, study, options.progress, &tyres.inflated(settings));
-    if (!r.completed) {
-      const std::string m = fmt::format("rolling '{}': {}", r.name, r.failure);
-      report(options.progress, "warning: " + m + " (converged states kept)");
-      incomplete.push_back(m);
-    }
-    write_rolling(folder, plots, mesh, c, r);
-    toml::table t = rolling_summary(r);
-    t.insert("footprint_solver", counters_table(r.footprint.counters));
-    t.insert("solver", counters_table(r.counters));
-    add_krylov(*t["solver"].as_table(), r.counters);
-    rolling_summaries.push_back(std::move(t));
-    times.end();
+  for (const RollingStudy& study_case : c.rolling) {
+    study("rolling '" + study_case.name + "'", [&] {
+      const MeshSettings& settings = study_case.mesh.value_or(c.mesh);
+      const TyreMesh& mesh = tyres.mesh(settings);
+      if (study_case.mesh)
+        report(progress, fmt::format("rolling '{}' on its own mesh: {} x {}, {} elements", study_case.name,
+                                     settings.circumferential_elements, settings.meridional_elements,
+                                     mesh.mesh.element_count()));
+      const RollingResult r =
+          run_rolling(mesh, c.tyre, c.inflation, c.contact, study_case, progress, &tyres.inflated(settings));
+      if (!r.completed) {
+        const std::string m = fmt::format("rolling '{}': {}", r.name, r.failure);
+        report(progress, "warning: " + m + " (converged states kept)");
+        incomplete.push_back(m);
+      }
+      plots.attempt("rolling '" + r.name + "'", [&] { write_rolling(folder, plots, mesh, c, r); });
+      toml::table t = rolling_summary(r);
+      t.insert("footprint_solver", counters_table(r.footprint.counters));
+      t.insert("solver", counters_table(r.counters));
+      add_krylov(*t["solver"].as_table(), r.counters);
+      rolling_summaries.push_back(std::move(t));
+    });
   }
   if (!c.rolling.empty()) summary.insert("rolling", std::move(rolling_summaries));
   const bool completed = incomplete.empty();
   summary.insert("completed", completed);
   if (!incomplete.empty()) summary.insert("incomplete", std::move(incomplete));
+  toml::array skipped;
+  for (const std::string& m : plots.skipped()) skipped.push_back(m);
+  if (!skipped.empty()) summary.insert("skipped_reports", std::move(skipped));
 
   times.begin("summary and results folder");
   const double before_writing = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   summary.insert("phases", times.table());
   summary.insert("wall_time_s", before_writing);
   write_json(folder.path("summary.json"), summary);
-  folder.commit();
+  // A run that stopped short leaves the last complete results as they were.
+  const std::filesystem::path where = folder.commit(completed ? "" : "-incomplete");
   times.end();
-  times.report(options.progress, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-  return {options.out_dir / "summary.json", completed};
+  times.report(progress, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  return {where, where / "summary.json", completed, plots.skipped()};
 }
 
 }  // namespace tirefem

@@ -322,6 +322,7 @@ LoadPathResult follow_load_path(
     const NewtonOutcome outcome = newton.solve(trial, target);
     if (!outcome.converged) {
       ++result.cutbacks;
+      result.last_failure = {target, outcome.iterations, outcome.relative_residual};
       increment *= 0.5;
       if (progress)
         progress(fmt::format("  load factor {:.4f}: no convergence, increment cut to {:.4g}", target,

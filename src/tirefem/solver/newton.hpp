@@ -116,6 +116,7 @@ struct LoadPathResult {
   bool completed = false;
   std::vector<LoadStepRecord> steps;
   int cutbacks = 0;
+  LoadStepRecord last_failure;  // the last attempt that did not converge (its target λ and residual)
 };
 
 // Drives λ from 0 to 1. Each step starts from a secant prediction of the last two converged states; an
