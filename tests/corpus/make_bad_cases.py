@@ -136,6 +136,8 @@ EDITS = [
     ("ply-angle", "tyre.plies.carcass.angle", [("angle = 90.0", "angle = 95.0")]),
     ("quadrature-zero", "contact.quadrature", [("quadrature = 4", "quadrature = 0")]),
     ("target-load-negative", "footprint[0].target_load", [("target_load = 3700.0", "target_load = -3700.0")]),
+    ("target-load-huge", "footprint[0].target_load", [("target_load = 3700.0", "target_load = 1e300")]),
+    ("contact-iterations-huge", "contact.max_contact_iterations", [("max_contact_iterations = 30", "max_contact_iterations = 1000000000")]),
     ("load-tolerance-inf", "footprint[0].load_tolerance", [("load_tolerance = 1e-3", "load_tolerance = inf")]),
     ("surface-empty-terms", "load_curve[0].support.terms", [('name = "plane"\nsupport = { kind = "plane" }\ntheory = "nonlinear"',
                                                               'name = "plane"\nsupport = { kind = "surface", terms = [] }\ntheory = "nonlinear"')]),

@@ -222,6 +222,16 @@ TEST(CaseReaderChecks, PlausibilityBounds) {
     SCOPED_TRACE(c.to);
     EXPECT_CONTAINS(error_of(edited(c.from, c.to)), c.message);
   }
+  EXPECT_CONTAINS(error_of(edited("target_load = 3700.0", "target_load = 1e300")),
+                  "footprint[0].target_load: must be ≤ 1e+06 N (the plausibility bound for any real tyre; got 1e+300)");
+  EXPECT_CONTAINS(error_of(edited("max_contact_iterations = 30", "max_contact_iterations = 1000000")),
+                  "contact.max_contact_iterations: must be ≤ 1000 (got 1000000)");
+  EXPECT_CONTAINS(error_of(tyre_with("[contact]\nmax_newton_iterations = 1001\n")),
+                  "contact.max_newton_iterations: must be ≤ 1000 (got 1001)");
+  EXPECT_CONTAINS(error_of(edited("max_newton_iterations = 25\nresidual_tolerance = 1e-8      # Newton",
+                                  "max_newton_iterations = 5000\nresidual_tolerance = 1e-8      # Newton")),
+                  "inflation.max_newton_iterations: must be ≤ 1000 (got 5000)");
+  EXPECT_EQ(error_of(edited("target_load = 3700.0", "target_load = 1e6")), "(no error)");
   // the ends of the bounds are accepted
   EXPECT_EQ(error_of(edited("pressure = 0.2", "pressure = 2.0")), "(no error)");
   EXPECT_EQ(error_of(edited("stiffness = 1.0", "stiffness = 100.0")), "(no error)");

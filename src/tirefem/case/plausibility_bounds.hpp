@@ -36,6 +36,9 @@ inline constexpr int kMaxMeridionalElements = 2000;      // equator to bead
 inline constexpr int kMaxLoadCurvePoints = 1000;         // load_curve.points
 inline constexpr int kMaxSweepPoints = 200;              // rolling.sweep.points
 inline constexpr int kMaxNameLength = 100;               // study and state names (they name files)
+inline constexpr int kMaxIterations = 1000;              // Newton and contact-region iteration limits
+// Target vertical loads (N, whole tyre): a truck tyre carries ~5e4 N, an aircraft tyre ~3e5 N.
+inline constexpr double kMaxTargetLoad = 1e6;
 
 // Other ranges.
 inline constexpr int kMaxSurfacePower = 8;        // support surface terms: x^p y^q with p, q in [0, 8]

@@ -44,14 +44,18 @@ void check_inflation(const FieldChecker& c, const InflationSettings& s, const st
   c.plausible(s.pressure, kPressure, pp);
   if (s.max_newton_iterations < 1)
     c.fail(join(path, "max_newton_iterations"), fmt::format("must be ≥ 1 (got {})", s.max_newton_iterations));
+  if (s.max_newton_iterations > kMaxIterations)
+    c.fail(join(path, "max_newton_iterations"), fmt::format("must be ≤ {} (got {})", kMaxIterations, s.max_newton_iterations));
   c.positive(s.residual_tolerance, join(path, "residual_tolerance"));
 }
 
 void check_contact(const FieldChecker& c, const ContactSettings& s, const std::string& path) {
   c.int_range(s.quadrature, 1, kMaxQuadrature, join(path, "quadrature"));
   c.at_least(s.max_contact_iterations, 1, join(path, "max_contact_iterations"));
+  c.at_most(s.max_contact_iterations, kMaxIterations, join(path, "max_contact_iterations"));
   c.at_least(s.region_tolerance, 0, join(path, "region_tolerance"));
   c.at_least(s.max_newton_iterations, 1, join(path, "max_newton_iterations"));
+  c.at_most(s.max_newton_iterations, kMaxIterations, join(path, "max_newton_iterations"));
   c.positive(s.residual_tolerance, join(path, "residual_tolerance"));
   c.positive(s.provisional_tolerance, join(path, "provisional_tolerance"));
 }

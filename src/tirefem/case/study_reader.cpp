@@ -77,6 +77,9 @@ void check_study_name(const FieldChecker& c, const std::string& name, const std:
 
 void check_load(const FieldChecker& c, double target_load, double load_tolerance, const std::string& path) {
   c.positive(target_load, join(path, "target_load"));
+  if (!(target_load <= kMaxTargetLoad))
+    c.fail(join(path, "target_load"),
+           fmt::format("must be ≤ {:g} N (the plausibility bound for any real tyre; got {:g})", kMaxTargetLoad, target_load));
   c.finite(load_tolerance, join(path, "load_tolerance"));
   if (!(load_tolerance > 0 && load_tolerance < kMaxLoadTolerance))
     c.fail(join(path, "load_tolerance"), fmt::format("must be > 0 and < {} (got {})", kMaxLoadTolerance, load_tolerance));
