@@ -63,6 +63,8 @@ EDITS = [
     ("profile-not-on-equator", "tyre.profile.points[0]", [("[ 0.00, 272.00]", "[ 1.00, 272.00]")]),
     ("profile-nan", "tyre.profile.points[2]", [("[ 9.80, 271.84]", "[ nan, 271.84]")]),
     ("profile-empty", "tyre.profile.points", []),  # built below
+    ("profile-spline-crosses", "tyre.profile.points[8]", []),  # built below
+    ("profile-spline-crosses-equator", "tyre.profile.points[0]", []),  # built below
     ("profile-touches-equator", "tyre.profile.points[1]", [("[ 4.90, 271.96]", "[ 0.0, 271.9]")]),
     # drums
     ("drum-tiny", "load_curve[1].support.diameter", [('{ kind = "drum", diameter = 1830.0 }   # drum', '{ kind = "drum", diameter = 0.001 }   # drum')]),
@@ -166,6 +168,13 @@ def special(name, text):
         start = text.index("points = [")
         end = text.index("]\n\n", start)
         return text[:start] + "points = [" + text[end:]
+    spline = {"profile-spline-crosses": "[0, 272], [40, 270], [70, 255], [80, 230], [72, 205], [50, 195], [35, 210], "
+                                        "[30, 240], [26, 265], [5, 271.55]",
+              "profile-spline-crosses-equator": "[0, 272], [0.2, 250], [40, 245], [60, 200]"}
+    if name in spline:  # the points do not cross, the spline through them does
+        start = text.index("points = [")
+        end = text.index("]\n\n", start)
+        return text[:start] + "points = [" + spline[name] + "]" + text[end + 1:]
     if name == "missing-profile":
         start = text.index("[tyre.profile]")
         end = text.index("]\n\n", start)

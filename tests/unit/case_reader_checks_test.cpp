@@ -10,6 +10,7 @@
 #include "tirefem/case/case_reader.hpp"
 #include "tirefem/case/mesh_size_estimate.hpp"
 #include "tirefem/case/profile_reader.hpp"
+#include "tirefem/tyre/meridian_profile.hpp"
 
 namespace tirefem {
 namespace {
@@ -52,6 +53,43 @@ TEST(CaseReaderChecks, ProfileMustNotCrossItself) {
                   "tyre.profile.points[2]: same point as points[1]");
   EXPECT_CONTAINS(error_of(with_profile("[0, 272], [0, 250], [60, 200]")),
                   "tyre.profile.points[1]: only the first point may lie on the equator");
+}
+
+TEST(CaseReaderChecks, TheSmoothCurveMustNotCrossItselfNorTheEquator) {
+  // the points do not cross, but the spline through them overshoots across the first segment
+  const std::string hook =
+      "[0, 272], [40, 270], [70, 255], [80, 230], [72, 205], [50, 195], [35, 210], [30, 240], [26, 265], [5, 271.55]";
+  EXPECT_CONTAINS(error_of(with_profile(hook)),
+                  "tyre.profile.points[8]: the smooth curve through the points crosses itself between points[8]–"
+                  "points[9] and points[0]–points[1]");
+  // the same points a little further from the first segment: no crossing (the zones then do not fit)
+  EXPECT_CONTAINS(error_of(with_profile(
+                      "[0, 272], [40, 270], [70, 255], [80, 230], [72, 205], [50, 195], [35, 210], [30, 240], [26, 265], "
+                      "[5, 268]")),
+                  "tyre.zones[");
+  // steeply down, then sideways: the spline bulges to x < 0 near the crown
+  EXPECT_CONTAINS(error_of(with_profile("[0, 272], [0.2, 250], [40, 245], [60, 200]")),
+                  "tyre.profile.points[0]: the smooth curve through the points reaches x = -1.27 between points[0] and "
+                  "points[1]: it crosses the equator");
+}
+
+TEST(CaseReaderChecks, TheOuterFaceMustNotFoldInAConcaveBend) {
+  Case c = read_case(kExample);
+  // an S-shaped carcass line: a concave bend of ~27 mm radius around (62, 244)
+  c.tyre.profile = {{0, 272}, {20, 271}, {40, 266}, {50, 258}, {55, 250}, {62, 244},
+                    {72, 240}, {80, 232}, {82, 220}, {78, 205}, {70, 190}};
+  c.tyre.zones.resize(1);
+  c.tyre.zones[0].s_end = MeridianProfile(c.tyre.profile).length();
+  c.tyre.interlayer_thickness = Table::constant(3.0);
+  EXPECT_EQ(validation_error_of(c), "(no error)");
+  c.tyre.interlayer_thickness = Table::constant(60.0);
+  const std::string e = validation_error_of(c);
+  EXPECT_CONTAINS(e, ": tyre.interlayer.thickness: h = 60 mm at s = ");
+  EXPECT_CONTAINS(e, "the outer face would fold over");
+  // the example's carcass line is convex: even the thickest plausible interlayer does not fold it
+  Case thick = read_case(kExample);
+  thick.tyre.interlayer_thickness = Table::constant(100.0);
+  EXPECT_EQ(validation_error_of(thick).find("fold"), std::string::npos) << validation_error_of(thick);
 }
 
 TEST(CaseReaderChecks, ProfileMustNotBeInsideOut) {

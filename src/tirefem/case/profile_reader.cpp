@@ -62,6 +62,53 @@ double profile_cavity_area(const std::vector<Eigen::Vector2d>& pts) {
   return 0.5 * twice;
 }
 
+namespace {
+
+// The index of the input segment (points[k]–points[k+1]) that contains arc length s.
+std::size_t segment_at(const std::vector<double>& knot_s, double s) {
+  const auto it = std::upper_bound(knot_s.begin(), knot_s.end(), s);
+  const auto k = static_cast<std::size_t>(std::max<std::ptrdiff_t>(it - knot_s.begin() - 1, 0));
+  return std::min(k, knot_s.size() - 2);
+}
+
+}  // namespace
+
+void check_interpolated_profile(const FieldChecker& c, const MeridianProfile& profile, const std::string& path) {
+  const std::vector<double>& knot_s = profile.point_arc_lengths();
+  std::vector<double> s;
+  for (std::size_t k = 0; k + 1 < knot_s.size(); ++k)
+    for (int j = 0; j < kProfileSamplesPerSegment; ++j)
+      s.push_back(knot_s[k] + (knot_s[k + 1] - knot_s[k]) * j / kProfileSamplesPerSegment);
+  s.push_back(profile.length());
+  std::vector<Eigen::Vector2d> x;
+  for (double si : s) x.push_back(profile.point(si));
+  for (std::size_t i = 1; i < x.size(); ++i)
+    if (!(x[i].x() > 0)) {
+      const std::size_t k = segment_at(knot_s, s[i]);
+      c.fail(index(path, k), fmt::format("the smooth curve through the points reaches x = {:.3g} between points[{}] "
+                                         "and points[{}]: it crosses the equator (add points or smooth the profile)",
+                                         x[i].x(), k, k + 1));
+    }
+  // Sampled segments sorted by their smallest x; each compared with those whose x-ranges overlap it.
+  struct Piece {
+    double x_min, x_max;
+    std::size_t i;
+  };
+  std::vector<Piece> pieces;
+  for (std::size_t i = 0; i + 1 < x.size(); ++i)
+    pieces.push_back({std::min(x[i].x(), x[i + 1].x()), std::max(x[i].x(), x[i + 1].x()), i});
+  std::sort(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) { return a.x_min < b.x_min; });
+  for (std::size_t a = 0; a < pieces.size(); ++a)
+    for (std::size_t b = a + 1; b < pieces.size() && pieces[b].x_min <= pieces[a].x_max; ++b) {
+      const std::size_t i = std::min(pieces[a].i, pieces[b].i), j = std::max(pieces[a].i, pieces[b].i);
+      if (j - i < 2 || !segments_meet(x[i], x[i + 1], x[j], x[j + 1])) continue;
+      const std::size_t ki = segment_at(knot_s, s[i]), kj = segment_at(knot_s, s[j]);
+      c.fail(index(path, kj), fmt::format("the smooth curve through the points crosses itself between points[{}]–"
+                                          "points[{}] and points[{}]–points[{}] (add points or smooth the profile)",
+                                          kj, kj + 1, ki, ki + 1));
+    }
+}
+
 double check_profile(const FieldChecker& c, const std::vector<Eigen::Vector2d>& pts, const std::string& path) {
   if (pts.size() < 2) c.fail(path, fmt::format("needs at least 2 points [x, r] (got {})", pts.size()));
   if (pts.size() > static_cast<std::size_t>(kMaxProfilePoints))
@@ -103,11 +150,14 @@ double check_profile(const FieldChecker& c, const std::vector<Eigen::Vector2d>& 
                              "below the crown, towards the wheel axis), so that the pressure pushes the "
                              "crown away from the axis (enclosed signed area {:.4g} mm², must be < 0)",
                              pts.back().y(), area));
+  MeridianProfile profile;
   try {
-    return MeridianProfile(pts).length();
+    profile = MeridianProfile(pts);
   } catch (const std::exception& e) {
     c.fail(path, e.what());
   }
+  check_interpolated_profile(c, profile, path);
+  return profile.length();
 }
 
 }  // namespace tirefem::case_reading

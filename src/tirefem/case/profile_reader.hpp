@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "tirefem/case/toml_fields.hpp"
+#include "tirefem/tyre/meridian_profile.hpp"
 
 namespace tirefem::case_reading {
 
@@ -16,6 +17,12 @@ std::vector<Eigen::Vector2d> read_profile(TomlFields& f, const toml::table& tyre
 // on: no two of its segments may cross or touch (nor may it touch the equator again, where the full
 // model's mirror image would meet it), and it must not be inside out (see profile_is_inside_out).
 double check_profile(const FieldChecker& c, const std::vector<Eigen::Vector2d>& pts, const std::string& path);
+
+// The spline the mesh is built on, sampled kProfileSamplesPerSegment times between input points: it must
+// stay off the equator (x > 0 after the start) and not cross itself, even where the points do not (an
+// overshoot between badly spaced points). Part of check_profile.
+inline constexpr int kProfileSamplesPerSegment = 4;
+void check_interpolated_profile(const FieldChecker& c, const MeridianProfile& profile, const std::string& path);
 
 // Signed area (mm²) enclosed by the profile, closed by the rim line from the bead back to the equator at
 // the bead's radius and the equator itself. Negative (clockwise in (x, r)) for a tyre: the normal

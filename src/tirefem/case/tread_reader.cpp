@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "tirefem/case/case_reader.hpp"
+#include "tirefem/tyre/meridian_profile.hpp"
 
 namespace tirefem::case_reading {
 
@@ -54,8 +55,25 @@ void check_table(const FieldChecker& c, const Table& t, const std::string& path,
   }
 }
 
+void check_interlayer_fold(const FieldChecker& c, const TyreDescription& t, const std::string& path) {
+  constexpr int kSamplesPerSegment = 8;
+  const MeridianProfile profile(t.profile);
+  const std::vector<double>& knot_s = profile.point_arc_lengths();
+  for (std::size_t k = 0; k + 1 < knot_s.size(); ++k)
+    for (int j = 0; j <= kSamplesPerSegment; ++j) {
+      const double s = knot_s[k] + (knot_s[k + 1] - knot_s[k]) * j / kSamplesPerSegment;
+      const double kappa = profile.curvature(s), h = t.interlayer_thickness.at(s);
+      if (kappa < 0 && h * -kappa >= 1.0)
+        c.fail(path, fmt::format("h = {:.3g} mm at s = {:.1f} mm (between points[{}] and points[{}] of the profile) is "
+                                 "not less than the radius of curvature, {:.3g} mm, of the carcass line's concave bend "
+                                 "there: the outer face would fold over (a thinner interlayer or a gentler bend)",
+                                 h, s, k, k + 1, -1.0 / kappa));
+    }
+}
+
 void check_interlayer_and_tread(const FieldChecker& c, const TyreDescription& t, double length, bool rolls) {
   check_table(c, t.interlayer_thickness, "tyre.interlayer.thickness", kThickness);
+  check_interlayer_fold(c, t, "tyre.interlayer.thickness");
   check_table(c, t.tread_height, "tyre.tread.height", kTreadHeight);
   c.in_range(t.tread_end_s, 0.0, length + kZoneEndTolerance, "tyre.tread.end_s");
   c.plausible(t.tread_stiffness, kTreadStiffness, "tyre.tread.stiffness");
