@@ -1,0 +1,37 @@
+#include "tirefem/case/tyre_reader.hpp"
+
+#include "tirefem/case/profile_reader.hpp"
+#include "tirefem/case/tread_reader.hpp"
+#include "tirefem/case/zone_reader.hpp"
+#include "tirefem/tyre/tyre_mesh.hpp"
+
+namespace tirefem::case_reading {
+
+TyreRead read_tyre(TomlFields& f, const toml::node& n, const std::string& path) {
+  const toml::table& t =
+      f.table(n, path, {"name", "cord_rubber_rule", "profile", "plies", "zones", "interlayer", "tread"});
+  TyreRead r;
+  TyreDescription& d = r.tyre;
+  if (const toml::node* v = f.get(t, path, "name")) d.name = f.string(*v, join(path, "name"));
+  CordRubberRule default_rule = CordRubberRule::halpin_tsai;
+  if (const toml::node* v = f.get(t, path, "cord_rubber_rule"))
+    default_rule = read_rule(f, *v, join(path, "cord_rubber_rule"));
+  d.profile = read_profile(f, t, path);
+  const std::map<std::string, Ply> plies = read_plies(f, t, path);
+  d.zones = read_zones(f, t, path, plies, default_rule);
+  r.shear_modulus_given = read_interlayer_and_tread(f, t, path, d);
+  return r;
+}
+
+double check_tyre(const FieldChecker& c, const TyreDescription& t, bool rolls) {
+  const double length = check_profile(c, t.profile, "tyre.profile.points");
+  check_zones(c, t.zones, length, "tyre.zones");
+  check_interlayer_and_tread(c, t, length, rolls);
+  return length;
+}
+
+double tyre_outer_radius(const TyreDescription& t) {
+  return t.profile.front().y() + t.interlayer_thickness.at(0.0) + tread_height_at(t, 0.0);
+}
+
+}  // namespace tirefem::case_reading
