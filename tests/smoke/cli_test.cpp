@@ -233,6 +233,60 @@ TEST(Cli, MissingFileIsAnError) {
 }
 
 
+CliRun run_cli_in(const fs::path& cwd, const std::string& args, bool prefix_cli = true);
+
+// ------------------------------------------------------------------------------------- determinism
+// A results file without what legitimately differs between runs: CSV columns of times, summary.json
+// lines of times and of the thread count.
+std::string without_timings(const fs::path& file) {
+  std::istringstream in(read_text(file));
+  std::ostringstream out;
+  std::string line;
+  std::vector<bool> keep;  // per CSV column
+  const bool csv = file.extension() == ".csv", json = file.extension() == ".json";
+  while (std::getline(in, line)) {
+    if (json && (line.find("time") != std::string::npos || line.find("\"threads\"") != std::string::npos)) continue;
+    if (!csv || line.starts_with("#")) {
+      out << line << '\n';
+      continue;
+    }
+    std::vector<std::string> cells;
+    std::stringstream cs(line);
+    for (std::string cell; std::getline(cs, cell, ',');) cells.push_back(cell);
+    if (keep.empty())
+      for (const std::string& h : cells) keep.push_back(h.find("time") == std::string::npos);
+    for (std::size_t i = 0; i < cells.size(); ++i)
+      if (i >= keep.size() || keep[i]) out << cells[i] << ',';
+    out << '\n';
+  }
+  return out.str();
+}
+
+// Two runs of the coarse case, one with one assembly thread and one with two (the BLAS keeps two threads:
+// its own round-off depends on its thread count), write the same numbers: every CSV, VTU, plot data file
+// and summary.json, times apart.
+TEST(Cli, RunsAreBitIdenticalWhateverTheAssemblyThreads) {
+  const fs::path work = scratch("determinism");
+  fs::create_directories(work);
+  fs::copy_file(kCoarseCase, work / "case.toml", fs::copy_options::overwrite_existing);
+  for (const std::string threads : std::vector<std::string>{"1", "2"}) {
+    const CliRun r = run_cli_in(work, "OPENBLAS_NUM_THREADS=2 OMP_NUM_THREADS=" + threads + " " + TIREFEM_CLI +
+                                          " run case.toml -q --out run" + threads, /*prefix_cli=*/false);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+  }
+  int compared = 0;
+  for (const auto& e : fs::recursive_directory_iterator(work / "run1")) {
+    const std::string ext = e.path().extension().string();
+    if (!e.is_regular_file() || ext == ".png" || ext == ".svg") continue;
+    const fs::path other = work / "run2" / fs::relative(e.path(), work / "run1");
+    ASSERT_TRUE(fs::exists(other)) << other;
+    EXPECT_EQ(without_timings(e.path()), without_timings(other)) << fs::relative(e.path(), work / "run1");
+    ++compared;
+  }
+  EXPECT_GT(compared, 40);
+  fs::remove_all(work);
+}
+
 // ---------------------------------------------------------------------------------- the output folder
 // Cases cut from the coarse case: up to its first study (the inflation alone, about a second), plus one
 // load curve whose contact Newton may stop at once (a study that stops short).
@@ -248,8 +302,8 @@ fs::path write_case(const fs::path& file, const std::string& text) {
 }
 
 // `tirefem ARGS` run in folder `cwd`.
-CliRun run_cli_in(const fs::path& cwd, const std::string& args) {
-  return run_cli_command("cd '" + cwd.string() + "' && " + std::string(TIREFEM_CLI) + " " + args);
+CliRun run_cli_in(const fs::path& cwd, const std::string& args, bool prefix_cli) {
+  return run_cli_command("cd '" + cwd.string() + "' && " + (prefix_cli ? std::string(TIREFEM_CLI) + " " : "") + args);
 }
 
 bool has_hidden_leftovers(const fs::path& dir) {

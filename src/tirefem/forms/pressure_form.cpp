@@ -15,6 +15,7 @@ void PressureForm::add_pattern(PatternBuilder& pattern) const {
 
 void PressureForm::assemble(const FormInput& input, SparseSystem& system) const {
   const int n = static_cast<int>(elements_.size());
+  BlockBatch& batch = system.batch(n);
 #pragma omp parallel for schedule(static)
   for (int i = 0; i < n; ++i) {
     const int e = elements_[i];
@@ -24,8 +25,9 @@ void PressureForm::assemble(const FormInput& input, SparseSystem& system) const 
     const ElementVector f = -load.force;
     ElementMatrix k = -load.tangent;
     if (symmetrize_) k = 0.5 * (k + k.transpose()).eval();
-    system.add(mesh_.element_dofs(e), f, k, input.with_tangent);
+    batch.set(i, mesh_.element_dofs(e), f, k, input.with_tangent);
   }
+  system.add(batch);
 }
 
 std::optional<EnergyChange> PressureForm::energy_change(const Eigen::VectorXd& from, const Eigen::VectorXd& to,

@@ -38,14 +38,16 @@ void ShellInternalForce::add_pattern(PatternBuilder& pattern) const {
 
 void ShellInternalForce::assemble(const FormInput& input, SparseSystem& system) const {
   const int n = mesh_.element_count();
+  BlockBatch& batch = system.batch(n);
 #pragma omp parallel for schedule(static)
   for (int e = 0; e < n; ++e) {
     const auto dofs = mesh_.element_dofs(e);
     const ElementConfiguration x = element_configuration(mesh_, e, input.displacement);
     const ElementResponse r =
         three_layer_element(x.reference, x.current, sections_[e], kinematics_, input.with_tangent);
-    system.add(dofs, r.force, r.tangent, input.with_tangent);
+    batch.set(e, dofs, r.force, r.tangent, input.with_tangent);
   }
+  system.add(batch);
 }
 
 std::optional<EnergyChange> ShellInternalForce::energy_change(const Eigen::VectorXd& from,

@@ -157,6 +157,7 @@ void TreadFrictionForm::assemble(const FormInput& input, SparseSystem& system) c
   const FrictionPlan fresh = frozen_.empty() ? plan(input.displacement) : FrictionPlan{};
   const FrictionPlan& plan = frozen_.empty() ? fresh : frozen_;
   const int n = static_cast<int>(points_.size());
+  BlockBatch& batch = system.batch(n);
 #pragma omp parallel for schedule(dynamic, 64)
   for (int q = 0; q < n; ++q) {
     const FrictionPlanPoint& pp = plan[q];
@@ -246,8 +247,9 @@ void TreadFrictionForm::assemble(const FormInput& input, SparseSystem& system) c
     }
     const double* block = input.with_tangent ? tangent.data() : nullptr;
     const double* forces = f.data();
-    system.add(std::span<const int>(dofs.data(), m), forces, block, input.with_tangent);
+    batch.set(q, std::span<const int>(dofs.data(), m), forces, block, input.with_tangent);
   }
+  system.add(batch);
 }
 
 std::vector<TreadTraction> TreadFrictionForm::evaluate(const Eigen::VectorXd& u) const {

@@ -84,6 +84,7 @@ void WinklerContactForm::freeze_region(std::vector<char> region) {
 
 void WinklerContactForm::assemble(const FormInput& input, SparseSystem& system) const {
   const int groups = static_cast<int>(element_begin_.size()) - 1;
+  BlockBatch& batch = system.batch(groups);
 #pragma omp parallel for schedule(dynamic, 16)
   for (int k = 0; k < groups; ++k) {
     Eigen::Matrix<double, 12, 1> f = Eigen::Matrix<double, 12, 1>::Zero();
@@ -106,8 +107,9 @@ void WinklerContactForm::assemble(const FormInput& input, SparseSystem& system) 
           tangent.block<3, 3>(3 * a, 3 * b) += p.shape[a] * p.shape[b] * point_tangent;
       }
     }
-    if (any) system.add(outer_dofs(points_[element_begin_[k]].pairs), f, tangent, input.with_tangent);
+    if (any) batch.set(k, outer_dofs(points_[element_begin_[k]].pairs), f, tangent, input.with_tangent);
   }
+  system.add(batch);
 }
 
 std::optional<EnergyChange> WinklerContactForm::energy_change(const Eigen::VectorXd& from,
