@@ -27,6 +27,7 @@ struct SolveCounters {
   int krylov_failures = 0;
   int krylov_iterations = 0;
   double krylov_s = 0.0;
+  double factor_flops = 0.0;  // of one Cholesky factorisation (0: none done)
 };
 
 // Adds the work of a Newton solver and its problem (iterations, factorisations, times) to c.

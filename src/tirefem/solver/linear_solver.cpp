@@ -40,8 +40,19 @@ void SparseDirectSolver::analyse_cholesky(const SparseMatrix& matrix) {
   auto& s = *impl_;
   if (s.cholesky_analysed) return;
   const auto t0 = std::chrono::steady_clock::now();
+  // Fill-reducing ordering: the best (fewest flops) of minimum degree and two nested dissections. On the
+  // tyre's shell meshes nested dissection wins: 120 × 46 half model, AMD 2.2, METIS 1.77, NESDIS 1.71 GFlop
+  // per factorisation. The analysis is done once per solver, the factorisations many times.
+  cholmod_common& common = s.cholesky.cholmod();
+  common.nmethods = 3;
+  common.method[0].ordering = CHOLMOD_AMD;
+  common.method[1].ordering = CHOLMOD_METIS;
+  common.method[2].ordering = CHOLMOD_NESDIS;
+  common.postorder = 1;
   s.cholesky.analyzePattern(matrix);
   s.cholesky_analysed = true;
+  stats_.factor_flops = common.fl;
+  stats_.factor_nonzeros = common.lnz;
   stats_.analysis_s += seconds_since(t0);
 }
 

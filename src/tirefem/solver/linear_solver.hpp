@@ -11,6 +11,8 @@ namespace tirefem {
 struct LinearSolverStats {
   int factorizations = 0;
   int solves = 0;
+  double factor_flops = 0.0;     // of one Cholesky factorisation, from the symbolic analysis
+  double factor_nonzeros = 0.0;  // in its factor L
   double analysis_s = 0.0;
   double factorization_s = 0.0;
   double solve_s = 0.0;
