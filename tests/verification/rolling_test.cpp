@@ -283,3 +283,34 @@ TEST(Rolling, ReversedTravelMirrorsTheSolution) {
 
 }  // namespace
 }  // namespace tirefem::verification
+
+namespace tirefem::verification {
+namespace {
+
+// A rolling study started from the static footprint of an earlier study at the same load (run_case shares
+// it between studies) gives the same states as one that solves its own footprint.
+TEST(Rolling, SharedFootprintGivesTheSameStates) {
+  const RollingResult& own = run(Run::drum);
+  ASSERT_TRUE(own.footprint.completed);
+  const Case& c = example_case();
+  RollingStudy s = drum_study();
+  s.name = "drum_shared";
+  std::string progress;
+  const RollingResult shared = run_rolling(coarse_tyre(), c.tyre, c.inflation, settings(), s,
+                                           [&](const std::string& m) { progress += m + "\n"; }, nullptr,
+                                           &own.footprint);
+  EXPECT_EQ(shared.footprint.name, "drum_shared");
+  EXPECT_NE(progress.find("static footprint solved before"), std::string::npos) << progress;
+  EXPECT_EQ(progress.find("footprint 'drum_shared'"), std::string::npos) << "the footprint was solved again";
+  EXPECT_EQ(shared.footprint.counters.newton_iterations, own.footprint.counters.newton_iterations);
+  ASSERT_EQ(shared.states.size(), own.states.size());
+  for (std::size_t i = 0; i < own.states.size(); ++i) {
+    EXPECT_EQ(shared.states[i].converged, own.states[i].converged);
+    EXPECT_NEAR(shared.states[i].figures.Qy_N, own.states[i].figures.Qy_N, 1e-9 * own.footprint.target_Qz_N.value_or(3000.0))
+        << own.states[i].name;
+    EXPECT_NEAR(shared.states[i].figures.Qz_N, own.states[i].figures.Qz_N, 1e-9 * own.footprint.target_Qz_N.value_or(3000.0));
+  }
+}
+
+}  // namespace
+}  // namespace tirefem::verification

@@ -315,7 +315,7 @@ RollingStateResult free_rolling(RollingModel& model, const RollingStudy& study, 
 
 RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const InflationSettings& inflation,
                           const ContactSettings& contact, const RollingStudy& study, const ProgressSink& progress,
-                          const InflationResult* inflated) {
+                          const InflationResult* inflated, const StaticContactResult* footprint) {
   RollingResult r;
   r.name = study.name;
   r.support = study.support;
@@ -326,12 +326,20 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
     progress(fmt::format("rolling '{}': {}, μ = {}, travel {}, at the footprint of Qz = {} N", study.name,
                          support_label(study.support), study.friction, study.reverse ? "-y" : "+y",
                          study.target_load));
-  FootprintStudy fs;
-  fs.name = study.name;
-  fs.support = study.support;
-  fs.target_load = study.target_load;
-  fs.load_tolerance = study.load_tolerance;
-  r.footprint = run_footprint(tm, tyre, inflation, contact, fs, progress, inflated);
+  if (footprint && footprint->completed) {
+    r.footprint = *footprint;
+    r.footprint.name = study.name;
+    if (progress)
+      progress(fmt::format("  the static footprint solved before: Qz {:.1f} N at δz {:.3f} mm",
+                           r.footprint.points.back().patch.Qz_N, r.footprint.final_state.deflection_mm));
+  } else {
+    FootprintStudy fs;
+    fs.name = study.name;
+    fs.support = study.support;
+    fs.target_load = study.target_load;
+    fs.load_tolerance = study.load_tolerance;
+    r.footprint = run_footprint(tm, tyre, inflation, contact, fs, progress, inflated);
+  }
   if (!r.footprint.completed) {
     r.failure = "static footprint: " + r.footprint.failure;
     return r;

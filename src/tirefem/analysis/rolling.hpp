@@ -89,10 +89,13 @@ struct RollingResult {
   SolveCounters counters;                             // rolling phase (after the footprint)
 };
 
-// From `inflated` when given (see run_footprint), else from its own inflation.
+// From `inflated` when given (see run_footprint), else from its own inflation. `footprint`, when given, is
+// the completed static footprint of this mesh on the study's support at its target load (shared by the
+// studies at that load); else the study solves its own.
 RollingResult run_rolling(const TyreMesh& tyre_mesh, const TyreDescription& tyre, const InflationSettings& inflation,
                           const ContactSettings& contact, const RollingStudy& study, const ProgressSink& progress = {},
-                          const InflationResult* inflated = nullptr);
+                          const InflationResult* inflated = nullptr,
+                          const StaticContactResult* footprint = nullptr);
 
 // Solves the rolling problem at the forms' current settings from u (overwritten). Two-level: the contact
 // region and the friction plan are frozen together in each outer iteration; single loop: both follow

@@ -221,6 +221,32 @@ class InflatedTyres {
   std::map<std::tuple<int, int, bool, double>, Entry> entries_;
 };
 
+// Completed static footprints by mesh, support and target load: a rolling study at the load and on the
+// support of an earlier footprint (a [[footprint]] study on the case's mesh, or another rolling study)
+// starts from it instead of solving it again.
+class SharedFootprints {
+ public:
+  const StaticContactResult* find(const MeshSettings& m, const SupportDescription& s, double load,
+                                  double tolerance) const {
+    const auto it = entries_.find(key(m, s, load, tolerance));
+    return it == entries_.end() ? nullptr : &it->second;
+  }
+  void keep(const MeshSettings& m, const SupportDescription& s, double load, double tolerance,
+            const StaticContactResult& r) {
+    if (r.completed) entries_.try_emplace(key(m, s, load, tolerance), r);
+  }
+
+ private:
+  static std::string key(const MeshSettings& m, const SupportDescription& s, double load, double tolerance) {
+    std::string k = fmt::format("{} {} {} {:a} | {} {:a} | {:a} {:a}", m.circumferential_elements,
+                                m.meridional_elements, m.half_model, m.circumferential_refinement,
+                                static_cast<int>(s.kind), s.drum_diameter, load, tolerance);
+    for (const auto& t : s.terms) k += fmt::format(" {:a} {} {}", t.coefficient, t.x_power, t.y_power);
+    return k;
+  }
+  std::map<std::string, StaticContactResult> entries_;
+};
+
 std::string incomplete_message(const StaticContactResult& r) {
   return fmt::format("'{}' stopped at δz = {:.3g} mm: {}", r.name, r.final_state.deflection_mm, r.failure);
 }
@@ -334,10 +360,13 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     plots.attempt("load characteristic", [&] { plots.plot("load_characteristic", load_characteristic_plot(list)); });
     summary.insert("load_curves", std::move(curve_summaries));
   }
+  SharedFootprints footprints;
   for (const FootprintStudy& study_case : c.footprints) {
     study("footprint '" + study_case.name + "'", [&] {
       const StaticContactResult r =
           run_footprint(tm, c.tyre, c.inflation, c.contact, study_case, progress, &tyres.inflated(c.mesh));
+      if (!study_case.linear)
+        footprints.keep(c.mesh, study_case.support, study_case.target_load, study_case.load_tolerance, r);
       write_csv(folder.path(r.name + "/load_points.csv"), load_curve_table(r));
       if (!r.completed) {
         report(progress, "warning: footprint " + incomplete_message(r));
@@ -366,8 +395,10 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
         report(progress, fmt::format("rolling '{}' on its own mesh: {} x {}, {} elements", study_case.name,
                                      settings.circumferential_elements, settings.meridional_elements,
                                      mesh.mesh.element_count()));
-      const RollingResult r =
-          run_rolling(mesh, c.tyre, c.inflation, c.contact, study_case, progress, &tyres.inflated(settings));
+      const RollingResult r = run_rolling(
+          mesh, c.tyre, c.inflation, c.contact, study_case, progress, &tyres.inflated(settings),
+          footprints.find(settings, study_case.support, study_case.target_load, study_case.load_tolerance));
+      footprints.keep(settings, study_case.support, study_case.target_load, study_case.load_tolerance, r.footprint);
       if (!r.completed) {
         const std::string m = fmt::format("rolling '{}': {}", r.name, r.failure);
         report(progress, "warning: " + m + " (converged states kept)");
