@@ -52,7 +52,9 @@ StaticContactResult run(const FootprintStudy& f) {
 
 // The lowest tread point of the inflated tyre is (nearly) at the equator under the axle, and a tread point
 // moves with the breaker face: the first touch is minus the crown's radial growth, to the distance of the
-// nearest tread point from φ = 0, s = 0 (~0.01 mm here). The drum (1.83 m) touches at the same point.
+// nearest tread point from φ = 0, s = 0 (here 0.016 mm: the nearest point is ~1.4 mm off the equator and
+// 0.3° off φ = 0, where the crown is lower and grows a little less). The drum (1.83 m) touches at the
+// same point.
 TEST(FirstTouch, IsMinusTheCrownGrowthOnPlaneAndDrum) {
   const Case& c = example_case();
   const auto elements = evaluate_element_results(mesh(), c.tyre, inflated().displacement, Kinematics::nonlinear);
@@ -82,21 +84,21 @@ TEST(FirstTouch, IsMinusTheCrownGrowthOnPlaneAndDrum) {
 // reached on other paths, to the Newton tolerance); its first point carries no load, while the undeformed
 // origin's first point (δz = 0) already presses.
 TEST(FirstTouch, LoadCurveFromFirstTouchIsTheShiftedCurve) {
-  const StaticContactResult b = curve(load_curve("b", plane_support(), 8.0, 2), DeflectionOrigin::first_touch);
+  const StaticContactResult b = curve(load_curve("b", plane_support(), 6.0, 2), DeflectionOrigin::first_touch);
   ASSERT_TRUE(b.completed) << b.failure;
   const double ft = b.first_touch_deflection_mm;
-  const StaticContactResult a = curve(load_curve("a", plane_support(), 8.0 + ft, 2), DeflectionOrigin::undeformed);
+  const StaticContactResult a = curve(load_curve("a", plane_support(), 6.0 + ft, 2), DeflectionOrigin::undeformed);
   ASSERT_TRUE(a.completed) << a.failure;
   EXPECT_EQ(a.first_touch_deflection_mm, ft);
   ASSERT_EQ(b.points.size(), 3u);
   EXPECT_NEAR(b.points[0].deflection_mm, ft, 1e-15);
-  EXPECT_NEAR(deflection_from_origin(b, b.points[2].deflection_mm), 8.0, 1e-12);
+  EXPECT_NEAR(deflection_from_origin(b, b.points[2].deflection_mm), 6.0, 1e-12);
   EXPECT_NEAR(b.points[2].deflection_mm, a.points[2].deflection_mm, 1e-12);
   const PatchFigures &pa = a.points[2].patch, &pb = b.points[2].patch;
   const double rel = std::abs(pa.Qz_N - pb.Qz_N) / pa.Qz_N;
-  std::printf("  first touch %.5f mm; Qz at 8 mm from it %.8f N, at %.5f mm from undeformed %.8f N (relative "
+  std::printf("  first touch %.5f mm; Qz at 6 mm from it %.8f N, at %.5f mm from undeformed %.8f N (relative "
               "difference %.2e); Qz at the first touch %.2e N, at δz = 0 %.3f N\n",
-              ft, pb.Qz_N, 8.0 + ft, pa.Qz_N, rel, b.points[0].patch.Qz_N, a.points[0].patch.Qz_N);
+              ft, pb.Qz_N, 6.0 + ft, pa.Qz_N, rel, b.points[0].patch.Qz_N, a.points[0].patch.Qz_N);
   EXPECT_LT(rel, 1e-6);
   EXPECT_EQ(pa.contact_area_mm2, pb.contact_area_mm2);
   EXPECT_LT(std::abs(b.points[0].patch.Qz_N), 1e-6);
@@ -106,27 +108,27 @@ TEST(FirstTouch, LoadCurveFromFirstTouchIsTheShiftedCurve) {
 
 // A footprint at a given deflection is that load point; a footprint at a load lands on the same state.
 TEST(FirstTouch, FootprintAtADeflectionAndAtItsLoadAgree) {
-  const StaticContactResult b = curve(load_curve("b", plane_support(), 8.0, 1), DeflectionOrigin::first_touch);
+  const StaticContactResult b = curve(load_curve("b", plane_support(), 6.0, 1), DeflectionOrigin::first_touch);
   ASSERT_TRUE(b.completed) << b.failure;
   FootprintStudy at_deflection = footprint(plane_support(), DeflectionOrigin::first_touch);
-  at_deflection.deflection = 8.0;
+  at_deflection.deflection = 6.0;
   const StaticContactResult f = run(at_deflection);
   ASSERT_TRUE(f.completed) << f.failure;
   EXPECT_FALSE(f.target_Qz_N.has_value());
-  EXPECT_EQ(f.given_deflection_mm, 8.0);
-  EXPECT_NEAR(deflection_from_origin(f, f.final_state.deflection_mm), 8.0, 1e-12);
+  EXPECT_EQ(f.given_deflection_mm, 6.0);
+  EXPECT_NEAR(deflection_from_origin(f, f.final_state.deflection_mm), 6.0, 1e-12);
   EXPECT_NEAR(f.points.back().patch.Qz_N, b.points.back().patch.Qz_N, 1e-9 * b.points.back().patch.Qz_N);
 
   FootprintStudy at_load = footprint(plane_support(), DeflectionOrigin::undeformed);
   at_load.target_load = b.points.back().patch.Qz_N;
   const StaticContactResult l = run(at_load);
   ASSERT_TRUE(l.completed) << l.failure;
-  std::printf("  Qz %.2f N at 8 mm from first touch (δz %.4f mm); the search at that load ends at δz %.4f mm after "
+  std::printf("  Qz %.2f N at 6 mm from first touch (δz %.4f mm); the search at that load ends at δz %.4f mm after "
               "%zu load points\n",
               b.points.back().patch.Qz_N, b.points.back().deflection_mm, l.final_state.deflection_mm,
               l.points.size());
   EXPECT_LE(std::abs(l.points.back().patch.Qz_N - at_load.target_load), at_load.load_tolerance * at_load.target_load);
-  // Qz rises by ~10 % per mm here, so the load tolerance (1e-3) holds δz to ~0.01 mm.
+  // Qz rises by ~20 % per mm here, so the load tolerance (1e-3) holds δz to ~0.005 mm.
   EXPECT_NEAR(l.final_state.deflection_mm, b.points.back().deflection_mm, 0.05);
 }
 

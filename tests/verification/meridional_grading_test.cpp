@@ -40,8 +40,10 @@ TEST(MeridionalGrading, UniformAndZoneGradedInflationConverge) {
                 meshes[k], z.crown_radius_growth_mm, u.crown_radius_growth_mm, z.section_width_growth_mm,
                 u.section_width_growth_mm, clock.seconds());
   }
-  EXPECT_LT(crown_gap[2], crown_gap[0]);
-  EXPECT_LT(width_gap[2], width_gap[0]);
+  // Observed: crown 0.075, 0.034, 0.009 mm; width 0.144, 0.152, 0.057 mm (the zones are assigned by
+  // element centre, an O(h) error in where a zone ends, so at least halving over 8× refinement).
+  EXPECT_LT(crown_gap[2], 0.5 * crown_gap[0]);
+  EXPECT_LT(width_gap[2], 0.5 * width_gap[0]);
 }
 
 }  // namespace
