@@ -52,7 +52,7 @@ double estimated_deflection_for_load(const std::vector<TreadPoint>& points,
     const double mid = 0.5 * (lo + hi);
     (membrane_load(mid) < load ? lo : hi) = mid;
   }
-  return 0.5 * (lo + hi);
+  return hi;  // the load is reached there
 }
 
 }  // namespace tirefem
