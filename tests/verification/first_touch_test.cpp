@@ -50,11 +50,12 @@ StaticContactResult run(const FootprintStudy& f) {
   return run_footprint(mesh(), c.tyre, c.inflation, settings(), f, {}, &inflated());
 }
 
-// The lowest tread point of the inflated tyre is (nearly) at the equator under the axle, and a tread point
-// moves with the breaker face: the first touch is minus the crown's radial growth, to the distance of the
-// nearest tread point from φ = 0, s = 0 (here 0.016 mm: the nearest point is ~1.4 mm off the equator and
-// 0.3° off φ = 0, where the crown is lower and grows a little less). The drum (1.83 m) touches at the
-// same point.
+// The first touch is where the inflated tread surface is lowest. A tread point moves with the breaker
+// face, so at the equator under the axle the surface has sunk by the crown's radial growth there. On this
+// mesh the lowest point is the tread point nearest there (s = 1.4 mm, φ = −0.3°), and the first touch is
+// minus the crown growth (crown_radius_growth_mm, the mean over the circumference) to 0.016 mm. (On the
+// 120 × 46 mesh the growth under the axle, 0.558 mm at s = 1.7 mm, exceeds that mean, 0.506 mm, and the
+// first touch is −0.551 mm.) The drum (1.83 m) touches at the same point; the plane's gap there is zero.
 TEST(FirstTouch, IsMinusTheCrownGrowthOnPlaneAndDrum) {
   const Case& c = example_case();
   const auto elements = evaluate_element_results(mesh(), c.tyre, inflated().displacement, Kinematics::nonlinear);
@@ -69,6 +70,15 @@ TEST(FirstTouch, IsMinusTheCrownGrowthOnPlaneAndDrum) {
   std::printf("  crown growth %.5f mm; first touch: plane %.5f mm, drum %.5f mm; Qz there %.2e N, %.2e N\n", growth,
               p.first_touch_deflection_mm, d.first_touch_deflection_mm, p.points.back().patch.Qz_N,
               d.points.back().patch.Qz_N);
+  std::size_t deepest = 0;
+  for (std::size_t q = 0; q < p.tread_points.size(); ++q)
+    if (p.final_state.tread[q].penetration > p.final_state.tread[deepest].penetration) deepest = q;
+  std::printf("  deepest tread point at s = %.3f mm, φ = %.4f rad, z = %.5f mm\n", p.tread_points[deepest].u,
+              p.tread_points[deepest].v, p.final_state.tread[deepest].position.z());
+  EXPECT_LT(p.tread_points[deepest].u, 2.0);
+  EXPECT_LT(std::abs(p.tread_points[deepest].v), 0.01);
+  EXPECT_NEAR(p.final_state.tread[deepest].position.z(), p.first_touch_deflection_mm, 1e-12);
+  EXPECT_NEAR(p.final_state.tread[deepest].penetration, 0.0, 1e-12);
   EXPECT_LT(p.first_touch_deflection_mm, 0.0);
   EXPECT_NEAR(p.first_touch_deflection_mm, -growth, 0.02);
   EXPECT_NEAR(d.first_touch_deflection_mm, p.first_touch_deflection_mm, 0.02);
