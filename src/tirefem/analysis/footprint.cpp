@@ -321,10 +321,9 @@ bool solve_at_given_deflection(StaticContactRun& run, double deflection, double 
   return true;
 }
 
-// Secant steps in δz towards the target load (at most max_step per step while below it), then the
-// Illinois variant of regula falsi inside the bracket. Every state tried is a converged load point. The
-// first step goes to a membrane estimate of the deflection (first_touch.hpp), within [0.5, max_step] mm
-// of the first point.
+// Steps in δz towards the target load (at most max_step each while below it), then the Illinois variant
+// of regula falsi inside the bracket. Every state tried is a converged load point. The first step goes to
+// a membrane estimate of the deflection (first_touch.hpp), within [0.5, max_step] mm of the first point.
 bool search_target_load(StaticContactRun& run, StaticContactResult& result, const FootprintStudy& study,
                         double pressure, double section_height, double max_step, const ProgressSink& progress) {
   const double target = study.target_load, tolerance = study.load_tolerance * study.target_load;
