@@ -144,6 +144,13 @@ EDITS = [
     ("surface-empty-terms", "load_curve[0].support.terms", [('name = "plane"\nsupport = { kind = "plane" }\ntheory = "nonlinear"',
                                                               'name = "plane"\nsupport = { kind = "surface", terms = [] }\ntheory = "nonlinear"')]),
     ("rolling-no-states", "rolling[1]", [('states = [\n  { state = "free" },\n  { state = "given_slip", slip = 0.02, name = "traction" },\n]', "states = []")]),
+    # modelling options (issue 10 item 5)
+    ("footprint-load-and-deflection", "footprint[0].deflection", [("target_load = 3700.0", "target_load = 3700.0\ndeflection = 20.0")]),
+    ("footprint-deflection-negative", "footprint[0].deflection", [("target_load = 3700.0", "deflection = -5.0")]),
+    ("footprint-deflection-beyond-bead", "footprint[0].deflection", [("target_load = 3700.0", "deflection = 500.0")]),
+    ("deflection-from-unknown", "load_curve[0].deflection_from", [('name = "plane"\nsupport = { kind = "plane" }\ntheory = "nonlinear"',
+                                                                  'name = "plane"\nsupport = { kind = "plane" }\ntheory = "nonlinear"\ndeflection_from = "inflated"')]),
+    ("meridional-grading-unknown", "mesh.meridional_grading", [("half_model = true", 'half_model = true\nmeridional_grading = "uniform"')]),
 ]
 
 

@@ -174,7 +174,7 @@ TEST(CaseReaderStudies, UnknownKeysInSupportsAndStudies) {
                 "max_deflexion = 40.0\npoints = 20\n\n[[load_curve]]\nname = \"drum\"");
   EXPECT_EQ(error_of(text), where(text, "max_deflexion") +
                                 "load_curve[0].max_deflexion: unknown key; expected one of: name, support, "
-                                "theory, max_deflection, points (did you mean 'max_deflection'?)");
+                                "theory, max_deflection, points, deflection_from (did you mean 'max_deflection'?)");
   EXPECT_CONTAINS(error_of(edited("target_load = 3700.0", "target_load = 3700.0\npoints = 3")),
                   "footprint[0].points: unknown key; expected one of: name, support, theory, target_load, "
                   "load_tolerance");

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <set>
 
+#include "tirefem/analysis/footprint.hpp"
 #include "tirefem/case/case_reader.hpp"
 #include "tirefem/tyre/ply_stiffness.hpp"
 
@@ -160,6 +161,54 @@ TEST(TyreMesh, TreadHeightEndsAtTheTreadEdge) {
   EXPECT_EQ(zone_at(t, 59.0), 0);
   EXPECT_EQ(zone_at(t, -61.0), 1);
   EXPECT_EQ(zone_at(t, 200.0), 3);
+}
+
+}  // namespace
+}  // namespace tirefem
+
+namespace tirefem {
+namespace {
+
+// meridional_grading = "uniform_arc_length": equal elements in s across the zone ends; each element takes
+// the zone of its centre, and an element across the tread edge keeps the tread points on the tread side.
+TEST(TyreMesh, UniformArcLengthGradingHasEqualElementsAcrossZones) {
+  const TyreDescription& t = example().tyre;
+  for (bool half : {true, false}) {
+    MeshSettings m = settings(24, 25, half);
+    m.meridional_grading = MeshSettings::MeridionalGrading::uniform_arc_length;
+    const TyreMesh tm = build_tyre_mesh(t, m);
+    const std::vector<double>& u = tm.mesh.u_values;
+    const double length = tm.profile.length() / (half ? 1.0 : 2.0);
+    ASSERT_EQ(static_cast<int>(u.size()), (half ? 1 : 2) * 25 + 1);
+    const double h = length / 25;
+    for (std::size_t i = 0; i + 1 < u.size(); ++i) EXPECT_NEAR(u[i + 1] - u[i], h, 1e-12 * length) << i;
+    // 25 equal elements (h ≈ 6.16 mm) put no edge near the zone ends 60 and 82 mm (60/h ≈ 9.75, 82/h ≈ 13.3).
+    for (double edge : {60.0, 82.0})
+      EXPECT_FALSE(std::any_of(u.begin(), u.end(), [&](double s) { return std::abs(std::abs(s) - edge) < 0.5; }));
+    for (int e = 0; e < tm.mesh.element_count(); ++e) {
+      EXPECT_EQ(tm.element_zone[e], zone_at(t, tm.element_s[e]));
+      EXPECT_EQ(tm.sections[e].core_shear_modulus, t.zones[tm.element_zone[e]].core_shear_modulus);
+    }
+  }
+}
+
+TEST(TyreMesh, UniformGradingKeepsTheTreadUpToItsEdge) {
+  const TyreDescription& t = example().tyre;
+  MeshSettings m = settings(24, 25, true);
+  m.meridional_grading = MeshSettings::MeridionalGrading::uniform_arc_length;
+  const TyreMesh tm = build_tyre_mesh(t, m);
+  const std::vector<TreadPoint> points = tyre_tread_points(tm, t, 4);
+  ASSERT_FALSE(points.empty());
+  double s_max = 0.0;
+  for (const TreadPoint& p : points) {
+    EXPECT_LE(p.u, t.tread_end_s);
+    s_max = std::max(s_max, p.u);
+  }
+  // The element across the tread edge (78 mm; edges at ≈ 73.9 and 80.0 mm) has points beyond its inner edge.
+  const double h = tm.profile.length() / 25;
+  const double inner_edge = std::floor(t.tread_end_s / h) * h;
+  EXPECT_GT(s_max, inner_edge);
+  EXPECT_GT(s_max, t.tread_end_s - h / 2);
 }
 
 }  // namespace

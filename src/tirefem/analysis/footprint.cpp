@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "tirefem/analysis/contact_iteration.hpp"
+#include "tirefem/analysis/first_touch.hpp"
 #include "tirefem/forms/linearized_form.hpp"
 #include "tirefem/forms/pressure_form.hpp"
 #include "tirefem/forms/shell_internal_force.hpp"
@@ -18,10 +19,16 @@ namespace tirefem {
 std::vector<TreadPoint> tyre_tread_points(const TyreMesh& tm, const TyreDescription& tyre, int quadrature) {
   const ShellMesh& m = tm.mesh;
   std::vector<int> elements;
+  // Graded by zones, an element belongs to the tread by its centre (the tread edge is an element edge
+  // unless that would make a sliver); graded uniformly, an element across the tread edge keeps the points
+  // on its tread side.
+  const bool by_inner_edge = tm.meridional_grading != MeshSettings::MeridionalGrading::zones;
   for (int e = 0; e < m.element_count(); ++e) {
-    const int jv = e / m.u_elements();
+    const int iu = e % m.u_elements(), jv = e / m.u_elements();
     const double phi = 0.5 * (m.v_values[jv] + m.v_values[jv + 1]);
-    if (std::abs(tm.element_s[e]) < tyre.tread_end_s && std::abs(phi) <= 0.5 * std::numbers::pi)
+    const double s = by_inner_edge ? std::min(std::abs(m.u_values[iu]), std::abs(m.u_values[iu + 1]))
+                                   : std::abs(tm.element_s[e]);
+    if (s < tyre.tread_end_s && std::abs(phi) <= 0.5 * std::numbers::pi)
       elements.push_back(e);
   }
   return make_tread_points(m, elements, quadrature, [&tyre](double s) {
@@ -131,10 +138,11 @@ class StaticContactRun {
  public:
   StaticContactRun(const TyreMesh& tm, const TyreDescription& tyre, const InflationSettings& inflation,
                    const ContactSettings& settings, const SupportDescription& support_description,
-                   Kinematics kinematics, StaticContactResult& result, const ProgressSink& progress,
-                   const InflationResult* inflated)
+                   Kinematics kinematics, DeflectionOrigin origin, StaticContactResult& result,
+                   const ProgressSink& progress, const InflationResult* inflated)
       : tm_(tm), settings_(settings), result_(result), progress_(progress),
         support_(make_support(support_description)) {
+    result_.deflection_from = origin;
     result_.inflation = inflated ? *inflated : inflate_for_contact(tm, inflation, progress);
     if (!result_.inflation.converged) throw std::runtime_error("inflation did not converge");
     if (result_.inflation.kinematics != Kinematics::nonlinear || result_.inflation.pressure != inflation.pressure)
@@ -163,15 +171,29 @@ class StaticContactRun {
     ns.reuse_factorization = settings.reuse_factorizations;
     ns.stable_equilibrium = settings.equilibrium == ContactSettings::Equilibrium::stable;
     newton_ = std::make_unique<NewtonSolver>(*problem_, ns);
-    path_ = std::make_unique<DeflectionPath>(*newton_, *contact_, settings, result_.inflation.displacement);
+    for (const TreadPointState& p : contact_->evaluate(result_.inflation.displacement))
+      inflated_tread_.push_back(p.position);
+    result_.first_touch_deflection_mm = first_touch_deflection(inflated_tread_, *support_);
+    if (progress_)
+      progress_(fmt::format("  the inflated tyre first touches the support at δz = {:.3f} mm (from the undeformed "
+                            "tyre)",
+                            result_.first_touch_deflection_mm));
     // δz is measured from the undeformed tyre (MODEL.md §2), so the inflated tyre, grown by about
     // 0.5 mm, already presses on the support at δz = 0: the first load point is solved like the others.
-    if (!solve_at(0.0))
+    // From the first touch, the first point is the inflated state itself, touching the support.
+    start_ = origin == DeflectionOrigin::first_touch ? result_.first_touch_deflection_mm : 0.0;
+    path_ = std::make_unique<DeflectionPath>(*newton_, *contact_, settings, result_.inflation.displacement, start_);
+    if (!solve_at(start_))
       throw std::runtime_error(fmt::format(
-          "the first contact state (δz = 0) did not converge: {}; check tyre.tread.stiffness (kp) and the "
+          "the first contact state (δz = {:.3g}) did not converge: {}; check tyre.tread.stiffness (kp) and the "
           "contact settings (max_newton_iterations, residual_tolerance)",
-          result_.failure));
+          start_, result_.failure));
   }
+
+  // δz (from the undeformed tyre) of the first load point: 0, or the first touch.
+  double start() const { return start_; }
+  const std::vector<Eigen::Vector3d>& inflated_tread() const { return inflated_tread_; }
+  const SupportSurface& support() const { return *support_; }
 
   // Solves at δz and records the load point; false (and result_.failure) when it does not converge.
   bool solve_at(double deflection) {
@@ -184,10 +206,15 @@ class StaticContactRun {
     }
     record(deflection, step, seconds_since(t0), newton_->linear_stats().factorizations - factorizations_before);
     const LoadPoint& p = result_.points.back();
+    const std::string where =
+        result_.deflection_from == DeflectionOrigin::first_touch
+            ? fmt::format("δ {:6.2f} mm from first touch (δz {:6.2f} mm)", deflection_from_origin(result_, deflection),
+                          deflection)
+            : fmt::format("δz {:6.2f} mm", deflection);
     if (progress_)
-      progress_(fmt::format("  δz {:6.2f} mm: Qz {:8.1f} N, patch {:5.1f} × {:5.1f} mm, pmax {:.3f} MPa "
+      progress_(fmt::format("  {}: Qz {:8.1f} N, patch {:5.1f} × {:5.1f} mm, pmax {:.3f} MPa "
                             "({} contact, {} Newton iterations{}, {:.2f} s){}{}",
-                            deflection, p.patch.Qz_N, p.patch.patch_length_mm, p.patch.patch_width_mm,
+                            where, p.patch.Qz_N, p.patch.patch_length_mm, p.patch.patch_width_mm,
                             p.patch.max_pressure_MPa, p.contact_iterations, p.newton_iterations,
                             step.cutbacks ? fmt::format(", {} cut-backs", step.cutbacks) : "", p.time_s,
                             stable(p.tangent_shift)
@@ -239,6 +266,8 @@ class StaticContactRun {
   std::unique_ptr<NonlinearProblem> problem_;
   std::unique_ptr<NewtonSolver> newton_;
   std::unique_ptr<DeflectionPath> path_;
+  double start_ = 0.0;
+  std::vector<Eigen::Vector3d> inflated_tread_;  // tread point positions in the inflated state
 };
 
 template <class Study>
@@ -249,7 +278,12 @@ StaticContactResult empty_result(const TyreMesh& tm, const ContactSettings& cont
   result.kinematics = study.linear ? Kinematics::linear : Kinematics::nonlinear;
   result.iteration = contact.iteration;
   result.half_model = tm.half_model;
+  result.deflection_from = study.deflection_from;
   return result;
+}
+
+const char* origin_label(DeflectionOrigin origin) {
+  return origin == DeflectionOrigin::first_touch ? " from the inflated tyre's first touch" : "";
 }
 
 }  // namespace
@@ -261,70 +295,93 @@ StaticContactResult run_load_curve(const TyreMesh& tm, const TyreDescription& ty
   const auto t0 = Clock::now();
   StaticContactResult result = empty_result(tm, contact, study);
   if (progress)
-    progress(fmt::format("load curve '{}': {}, {} theory, δz to {} mm in {} steps", study.name,
+    progress(fmt::format("load curve '{}': {}, {} theory, δz to {} mm{} in {} steps", study.name,
                          support_label(study.support), study.linear ? "linear" : "nonlinear",
-                         study.max_deflection, study.points));
-  StaticContactRun run(tm, tyre, inflation, contact, study.support, result.kinematics, result, progress, inflated);
+                         study.max_deflection, origin_label(study.deflection_from), study.points));
+  StaticContactRun run(tm, tyre, inflation, contact, study.support, result.kinematics, study.deflection_from, result,
+                       progress, inflated);
   bool ok = true;
-  for (int k = 1; k <= study.points && ok; ++k) ok = run.solve_at(study.max_deflection * k / study.points);
+  for (int k = 1; k <= study.points && ok; ++k)
+    ok = run.solve_at(run.start() + study.max_deflection * k / study.points);
   run.finish();
   result.completed = ok;
   result.counters.wall_s = seconds_since(t0);
   return result;
 }
 
-StaticContactResult run_footprint(const TyreMesh& tm, const TyreDescription& tyre,
-                                  const InflationSettings& inflation, const ContactSettings& contact,
-                                  const FootprintStudy& study, const ProgressSink& progress,
-                                  const InflationResult* inflated) {
-  const auto t0 = Clock::now();
-  StaticContactResult result = empty_result(tm, contact, study);
-  result.target_Qz_N = study.target_load;
-  if (progress)
-    progress(fmt::format("footprint '{}': {}, {} theory, Qz = {} N", study.name, support_label(study.support),
-                         study.linear ? "linear" : "nonlinear", study.target_load));
-  StaticContactRun run(tm, tyre, inflation, contact, study.support, result.kinematics, result, progress, inflated);
-  // Secant steps in δz towards the target load (at most kMaxStep per step while below it), then the
-  // Illinois variant of regula falsi inside the bracket. Every state tried is a converged load point.
-  constexpr double kFirstStep = 5.0, kMaxStep = 10.0;
+namespace {
+
+// The footprint at the study's given deflection: steps of at most max_step from the first point.
+bool solve_at_given_deflection(StaticContactRun& run, double deflection, double max_step) {
+  const double span = deflection - run.start();
+  if (span == 0.0) return true;  // the first point is the footprint
+  const int steps = std::max(1, static_cast<int>(std::ceil(std::abs(span) / max_step - 1e-9)));
+  for (int k = 1; k <= steps; ++k)
+    if (!run.solve_at(run.start() + span * k / steps)) return false;
+  return true;
+}
+
+// Steps in δz towards the target load (at most max_step each while below it), then the Illinois variant
+// of regula falsi inside the bracket. Every state tried is a converged load point. The first step goes to
+// a membrane estimate of the deflection (first_touch.hpp), within [0.5, max_step] mm of the first point.
+bool search_target_load(StaticContactRun& run, StaticContactResult& result, const FootprintStudy& study,
+                        double pressure, double section_height, double max_step, const ProgressSink& progress) {
   const double target = study.target_load, tolerance = study.load_tolerance * study.target_load;
-  double lo = 0.0, q_lo = 0.0;     // below the target
-  double hi = -1.0, q_hi = 0.0;    // above it, once found
+  const double q0 = run.last_Qz();
+  if (std::abs(q0 - target) <= tolerance) return true;
+  double lo = run.start(), q_lo = q0;  // below the target
+  double hi = 0.0, q_hi = 0.0;         // above it, once bracketed
+  bool bracketed = false;
   int lo_side_repeats = 0, hi_side_repeats = 0;
-  double next = kFirstStep;
-  bool ok = false;
-  // A physical bound on the search: the section height (tread surface at the crown to the bead). Beyond
-  // it the rim would be on the road.
-  const double section_height = tm.axis_z - tm.profile.point(tm.profile.s_end())[1];
+  double next = 0.0;
+  if (q0 > target) {
+    // Passed already at δz = 0 (from the undeformed tyre): between the first touch (Qz = 0) and here.
+    lo = result.first_touch_deflection_mm, q_lo = 0.0, hi = run.start(), q_hi = q0, bracketed = true;
+    next = lo + (target - q_lo) * (hi - lo) / (q_hi - q_lo);
+  } else {
+    const double estimate =
+        estimated_deflection_for_load(result.tread_points, run.inflated_tread(), run.support(), pressure,
+                                      result.half_model, target, run.start(), section_height);
+    next = run.start() + std::clamp(estimate - run.start(), 0.5, max_step);
+    if (progress)
+      progress(fmt::format("  membrane estimate of δz at {} N: {:.2f} mm; first step to δz = {:.2f} mm", target,
+                           estimate, next));
+  }
   for (int evaluation = 0; evaluation < 40; ++evaluation) {
     if (next > section_height) {
-      if (result.points.empty() || result.points.back().deflection_mm >= section_height) {
+      if (result.points.back().deflection_mm >= section_height) {
         result.failure = fmt::format(
             "Qz = {} N not reached: Qz is {:.0f} N at δz = {:.1f} mm, the section height (crown to bead); "
             "lower target_load",
-            target, result.points.empty() ? 0.0 : result.points.back().patch.Qz_N, section_height);
-        break;
+            target, result.points.back().patch.Qz_N, section_height);
+        return false;
       }
       next = section_height;
     }
-    if (!run.solve_at(next)) break;
+    if (!run.solve_at(next)) return false;
     const double q = run.last_Qz();
-    if (std::abs(q - target) <= tolerance) {
-      ok = true;
-      break;
-    }
+    if (std::abs(q - target) <= tolerance) return true;
     if (q < target) {
       lo = next, q_lo = q, ++lo_side_repeats, hi_side_repeats = 0;
     } else {
-      hi = next, q_hi = q, ++hi_side_repeats, lo_side_repeats = 0;
+      hi = next, q_hi = q, bracketed = true, ++hi_side_repeats, lo_side_repeats = 0;
     }
-    if (hi < 0) {
-      // Not bracketed yet: secant through the last two points below the target.
+    if (!bracketed) {
+      // Not bracketed yet. Qz grows faster than δz at first (the patch grows), so a secant through the last
+      // two points below the target overshoots, and a solve coming back down from above may find another
+      // equilibrium: through them, a power law Qz = k (δz − δ0)^n from the first touch δ0 instead (n in
+      // [1, 3]), else the secant.
       const auto& pts = result.points;
       const LoadPoint& a = pts[pts.size() - 2];
-      const double slope = (q - a.patch.Qz_N) / (next - a.deflection_mm);
-      const double guess = slope > 0 ? next + (target - q) / slope : next + kMaxStep;
-      next = std::min(std::max(guess, next + 0.5), next + kMaxStep);
+      const double touch = result.first_touch_deflection_mm, q_a = a.patch.Qz_N;
+      double guess = next + max_step;
+      if (q_a > 0 && q > q_a && a.deflection_mm > touch && next > a.deflection_mm) {
+        const double n = std::clamp(std::log(q / q_a) / std::log((next - touch) / (a.deflection_mm - touch)), 1.0, 3.0);
+        guess = touch + (next - touch) * std::pow(target / q, 1.0 / n);
+      } else if (q > q_a) {
+        guess = next + (target - q) * (next - a.deflection_mm) / (q - q_a);
+      }
+      next = std::min(std::max(guess, next + 0.5), next + max_step);
     } else {
       // Illinois: halve the stale end's residual when the same end moves twice in a row.
       const double f_lo = (q_lo - target) * (hi_side_repeats >= 2 ? 0.5 : 1.0);
@@ -332,8 +389,41 @@ StaticContactResult run_footprint(const TyreMesh& tm, const TyreDescription& tyr
       next = lo - f_lo * (hi - lo) / (f_hi - f_lo);
     }
   }
-  if (!ok && result.failure.empty())
-    result.failure = fmt::format("Qz = {} N not reached within 40 load points", target);
+  result.failure = fmt::format("Qz = {} N not reached within 40 load points", target);
+  return false;
+}
+
+}  // namespace
+
+StaticContactResult run_footprint(const TyreMesh& tm, const TyreDescription& tyre,
+                                  const InflationSettings& inflation, const ContactSettings& contact,
+                                  const FootprintStudy& study, const ProgressSink& progress,
+                                  const InflationResult* inflated) {
+  const auto t0 = Clock::now();
+  StaticContactResult result = empty_result(tm, contact, study);
+  if (study.deflection)
+    result.given_deflection_mm = *study.deflection;
+  else
+    result.target_Qz_N = study.target_load;
+  if (progress)
+    progress(fmt::format("footprint '{}': {}, {} theory, {}", study.name, support_label(study.support),
+                         study.linear ? "linear" : "nonlinear",
+                         study.deflection ? fmt::format("δz = {} mm{}", *study.deflection,
+                                                        origin_label(study.deflection_from))
+                                          : fmt::format("Qz = {} N", study.target_load)));
+  StaticContactRun run(tm, tyre, inflation, contact, study.support, result.kinematics, study.deflection_from, result,
+                       progress, inflated);
+  constexpr double kMaxStep = 10.0;
+  // A physical bound on the search: the section height (tread surface at the crown to the bead). Beyond
+  // it the rim would be on the road.
+  const double section_height = tm.axis_z - tm.profile.point(tm.profile.s_end())[1];
+  bool ok = false;
+  if (study.deflection) {
+    // From the undeformed tyre the first point is at 0, from the first touch at the first touch.
+    ok = solve_at_given_deflection(run, run.start() + *study.deflection, kMaxStep);
+  } else {
+    ok = search_target_load(run, result, study, inflation.pressure, section_height, kMaxStep, progress);
+  }
   run.finish();
   result.completed = ok;
   result.counters.wall_s = seconds_since(t0);

@@ -67,9 +67,22 @@ struct StaticContactResult {
   std::vector<TreadPoint> tread_points;
   ContactState final_state;          // at the last converged point
   InflationResult inflation;         // the state the loading started from
-  std::optional<double> target_Qz_N; // footprint studies
+  std::optional<double> target_Qz_N; // footprint studies at a load
+  std::optional<double> given_deflection_mm;  // footprint studies at a deflection (from deflection_from)
   SolveCounters counters;            // contact phase only
+  // δz (from the undeformed tyre) at which the inflated tyre first touches the support
+  // (analysis/first_touch.hpp): < 0 when it already presses at δz = 0.
+  double first_touch_deflection_mm = 0.0;
+  // The origin of the deflections the study was given and reports. LoadPoint::deflection_mm and
+  // ContactState::deflection_mm are always from the undeformed tyre; deflection_from_origin converts.
+  DeflectionOrigin deflection_from = DeflectionOrigin::undeformed;
 };
+
+// A deflection from the undeformed tyre, measured from the result's origin.
+inline double deflection_from_origin(const StaticContactResult& r, double deflection_mm) {
+  return r.deflection_from == DeflectionOrigin::first_touch ? deflection_mm - r.first_touch_deflection_mm
+                                                            : deflection_mm;
+}
 
 // Runs the load curve from the nonlinear inflated state: `inflated` when given (a converged nonlinear
 // inflation of this mesh at inflation.pressure, shared by the studies of a run), else its own.
@@ -77,8 +90,8 @@ StaticContactResult run_load_curve(const TyreMesh& tyre_mesh, const TyreDescript
                                    const InflationSettings& inflation, const ContactSettings& contact,
                                    const LoadCurveStudy& study, const ProgressSink& progress = {},
                                    const InflationResult* inflated = nullptr);
-// Finds δz with Qz = target (points: the deflections tried on the way, all converged), from `inflated`
-// as above.
+// Finds δz with Qz = target (points: the deflections tried on the way, all converged), or solves at the
+// study's given deflection, from `inflated` as above.
 StaticContactResult run_footprint(const TyreMesh& tyre_mesh, const TyreDescription& tyre,
                                   const InflationSettings& inflation, const ContactSettings& contact,
                                   const FootprintStudy& study, const ProgressSink& progress = {},

@@ -213,12 +213,13 @@ class InflatedTyres {
     std::optional<InflationResult> inflated;
   };
   Entry& entry(const MeshSettings& m) {
-    return entries_[{m.circumferential_elements, m.meridional_elements, m.half_model, m.circumferential_refinement}];
+    return entries_[{m.circumferential_elements, m.meridional_elements, m.half_model, m.circumferential_refinement,
+                      static_cast<int>(m.meridional_grading)}];
   }
   const Case& case_;
   ProgressSink progress_;
   PhaseTimes& times_;
-  std::map<std::tuple<int, int, bool, double>, Entry> entries_;
+  std::map<std::tuple<int, int, bool, double, int>, Entry> entries_;
 };
 
 // Completed static footprints by mesh, support and target load: a rolling study at the load and on the
@@ -374,9 +375,10 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
       } else {
         plots.attempt("footprint '" + r.name + "'", [&] { write_loaded_state(folder, plots, tm, c, r); });
         report(progress,
-               fmt::format("footprint '{}': Qz {:.1f} N at δz {:.2f} mm, patch {:.1f} × {:.1f} mm, area {:.0f} "
+               fmt::format("footprint '{}': Qz {:.1f} N at δz {:.2f} mm{}, patch {:.1f} × {:.1f} mm, area {:.0f} "
                            "mm², pmax {:.3f} MPa",
-                           r.name, r.points.back().patch.Qz_N, r.final_state.deflection_mm,
+                           r.name, r.points.back().patch.Qz_N, deflection_from_origin(r, r.final_state.deflection_mm),
+                           r.deflection_from == DeflectionOrigin::first_touch ? " from first touch" : "",
                            r.points.back().patch.patch_length_mm, r.points.back().patch.patch_width_mm,
                            r.points.back().patch.contact_area_mm2, r.points.back().patch.max_pressure_MPa));
       }

@@ -63,6 +63,12 @@ struct MeshSettings {
   bool half_model = true;
   // Ratio of the element length at φ = ±π to the one at φ = 0 (the patch); 1 = uniform.
   double circumferential_refinement = 4.0;
+  // Where the meridional node lines go (tyre/tyre_mesh.hpp). zones: the meridian is cut at the zone ends
+  // and the tread edge and the elements shared out over the pieces (every element in one zone).
+  // uniform_arc_length: equal elements in s from equator to bead, across zone ends; each element takes
+  // the zone of its centre.
+  enum class MeridionalGrading { zones, uniform_arc_length };
+  MeridionalGrading meridional_grading = MeridionalGrading::zones;
 };
 
 struct InflationSettings {
@@ -111,22 +117,31 @@ struct ContactSettings {
   Equilibrium equilibrium = Equilibrium::nearest;
 };
 
+// Where a study's deflections are measured from. undeformed: the undeformed tyre touching the support
+// (MODEL.md §2, the paper's origin; the inflated tyre, ~0.5 mm larger, already presses at δz = 0).
+// first_touch: the inflated tyre touching it (δz = the first-touch deflection, analysis/first_touch.hpp).
+enum class DeflectionOrigin { undeformed, first_touch };
+
 // Load characteristic Qz(δz): the support pressed onto the inflated tyre in equal deflection steps.
 struct LoadCurveStudy {
   std::string name;  // used in file names and the summary; unique, [A-Za-z0-9_-]
   SupportDescription support;
   bool linear = false;          // geometrically linear theory (inflation and contact)
-  double max_deflection = 40.0; // mm
+  double max_deflection = 40.0; // mm, from deflection_from
   int points = 20;              // load points after the unloaded one (equal steps in δz)
+  DeflectionOrigin deflection_from = DeflectionOrigin::undeformed;
 };
 
-// The footprint at a target vertical load: δz is found so that Qz (full tyre) equals target_load.
+// The footprint at a target vertical load (δz is found so that Qz, full tyre, equals target_load) or at
+// a given deflection.
 struct FootprintStudy {
   std::string name;  // as LoadCurveStudy::name
   SupportDescription support;
   bool linear = false;
-  double target_load = 3700.0;    // N, full tyre
+  double target_load = 3700.0;    // N, full tyre (unless `deflection` is set)
   double load_tolerance = 1e-3;   // |Qz − target| ≤ tolerance · target
+  std::optional<double> deflection;  // mm, from deflection_from: the footprint at this δz, no load target
+  DeflectionOrigin deflection_from = DeflectionOrigin::undeformed;
 };
 
 // One steady slow-rolling state (MODEL.md §5). The longitudinal slip is κ = (Ω Re − V)/V = Re/Rk − 1

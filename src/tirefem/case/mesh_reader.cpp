@@ -8,11 +8,17 @@ namespace tirefem::case_reading {
 
 MeshSettings read_mesh(TomlFields& f, const toml::node& n, const std::string& path, MeshSettings m) {
   const toml::table& t = f.table(
-      n, path, {"circumferential_elements", "meridional_elements", "half_model", "circumferential_refinement"});
+      n, path,
+      {"circumferential_elements", "meridional_elements", "half_model", "circumferential_refinement",
+       "meridional_grading"});
   f.opt_integer(t, path, "circumferential_elements", m.circumferential_elements);
   f.opt_integer(t, path, "meridional_elements", m.meridional_elements);
   f.opt_bool(t, path, "half_model", m.half_model);
   f.opt_number(t, path, "circumferential_refinement", m.circumferential_refinement, "");
+  if (const toml::node* v = f.get(t, path, "meridional_grading"))
+    m.meridional_grading = f.choice(*v, join(path, "meridional_grading"), {"zones", "uniform_arc_length"}) == 1
+                               ? MeshSettings::MeridionalGrading::uniform_arc_length
+                               : MeshSettings::MeridionalGrading::zones;
   return m;
 }
 
@@ -20,8 +26,11 @@ void check_mesh(const FieldChecker& c, const MeshSettings& m, const std::string&
   const std::string cp = join(path, "circumferential_elements"), mp = join(path, "meridional_elements");
   if (m.circumferential_elements < 3)
     c.fail(cp, fmt::format("must be ≥ 3 (got {})", m.circumferential_elements));
-  if (m.meridional_elements < static_cast<int>(zones))
-    c.fail(mp, fmt::format("must be ≥ the number of zones, {} (got {})", zones, m.meridional_elements));
+  // Graded by zones, each zone needs an element; uniform, a zone may fall between element centres.
+  if (m.meridional_grading == MeshSettings::MeridionalGrading::zones && m.meridional_elements < static_cast<int>(zones))
+    c.fail(mp, fmt::format("must be ≥ the number of zones, {} (got {}), when meridional_grading = \"zones\"",
+                           zones, m.meridional_elements));
+  if (m.meridional_elements < 1) c.fail(mp, fmt::format("must be ≥ 1 (got {})", m.meridional_elements));
   const std::string rp = join(path, "circumferential_refinement");
   c.finite(m.circumferential_refinement, rp);
   if (!(m.circumferential_refinement >= 1.0))

@@ -26,25 +26,53 @@ bool read_theory_is_linear(TomlFields& f, const toml::table& t, const std::strin
   return false;
 }
 
+DeflectionOrigin read_deflection_from(TomlFields& f, const toml::table& t, const std::string& path) {
+  if (const toml::node* v = f.get(t, path, "deflection_from"))
+    return f.choice(*v, join(path, "deflection_from"), {"undeformed", "first_touch"}) == 1
+               ? DeflectionOrigin::first_touch
+               : DeflectionOrigin::undeformed;
+  return DeflectionOrigin::undeformed;
+}
+
+// The deepest a support can press, from the study's origin (the first touch is at most ~a few mm off the
+// undeformed tyre's, so the section height bounds both).
+void check_deflection_below_section(const FieldChecker& c, double deflection, const std::string& path,
+                                    const TyreScale& tyre) {
+  if (!(deflection < tyre.section_height))
+    c.fail(path, fmt::format("must be less than the tyre's section height, {:.1f} mm (outer radius {:.1f} mm − the "
+                             "profile's smallest r): deeper, the support would pass the bead (got {:g})",
+                             tyre.section_height, tyre.outer_radius, deflection));
+}
+
 }  // namespace
 
 LoadCurveStudy read_load_curve(TomlFields& f, const toml::node& n, const std::string& path) {
-  const toml::table& t = f.table(n, path, {"name", "support", "theory", "max_deflection", "points"});
+  const toml::table& t =
+      f.table(n, path, {"name", "support", "theory", "max_deflection", "points", "deflection_from"});
   LoadCurveStudy s;
   read_study_name_and_support(f, t, path, s.name, s.support);
   s.linear = read_theory_is_linear(f, t, path);
   f.opt_number(t, path, "max_deflection", s.max_deflection, " (mm)");
   f.opt_integer(t, path, "points", s.points);
+  s.deflection_from = read_deflection_from(f, t, path);
   return s;
 }
 
 FootprintStudy read_footprint(TomlFields& f, const toml::node& n, const std::string& path) {
-  const toml::table& t = f.table(n, path, {"name", "support", "theory", "target_load", "load_tolerance"});
+  const toml::table& t = f.table(
+      n, path, {"name", "support", "theory", "target_load", "load_tolerance", "deflection", "deflection_from"});
   FootprintStudy s;
   read_study_name_and_support(f, t, path, s.name, s.support);
   s.linear = read_theory_is_linear(f, t, path);
   f.opt_number(t, path, "target_load", s.target_load, " (N)");
   f.opt_number(t, path, "load_tolerance", s.load_tolerance, " (relative)");
+  if (f.get(t, path, "deflection")) {
+    if (f.get(t, path, "target_load"))
+      f.fail(join(path, "deflection"),
+             "give either target_load (the footprint at a load) or deflection (at a deflection), not both");
+    s.deflection = f.req_number(t, path, "deflection", " (mm)");
+  }
+  s.deflection_from = read_deflection_from(f, t, path);
   return s;
 }
 
@@ -89,10 +117,7 @@ void check_load_curve(const FieldChecker& c, const LoadCurveStudy& s, const std:
   check_support(c, s.support, join(path, "support"), tyre.outer_radius);
   const std::string dp = join(path, "max_deflection");
   c.positive(s.max_deflection, dp);
-  if (!(s.max_deflection < tyre.section_height))
-    c.fail(dp, fmt::format("must be less than the tyre's section height, {:.1f} mm (outer radius {:.1f} mm − the "
-                           "profile's smallest r): deeper, the support would pass the bead (got {:g})",
-                           tyre.section_height, tyre.outer_radius, s.max_deflection));
+  check_deflection_below_section(c, s.max_deflection, dp, tyre);
   c.at_least(s.points, 1, join(path, "points"));
   if (s.points > kMaxLoadCurvePoints)
     c.fail(join(path, "points"), fmt::format("must be ≤ {} (got {})", kMaxLoadCurvePoints, s.points));
@@ -101,6 +126,12 @@ void check_load_curve(const FieldChecker& c, const LoadCurveStudy& s, const std:
 void check_footprint(const FieldChecker& c, const FootprintStudy& s, const std::string& path, const TyreScale& tyre) {
   check_support(c, s.support, join(path, "support"), tyre.outer_radius);
   check_load(c, s.target_load, s.load_tolerance, path);
+  if (s.deflection) {
+    const std::string dp = join(path, "deflection");
+    c.finite(*s.deflection, dp);
+    c.non_negative(*s.deflection, dp);
+    check_deflection_below_section(c, *s.deflection, dp, tyre);
+  }
 }
 
 }  // namespace tirefem::case_reading

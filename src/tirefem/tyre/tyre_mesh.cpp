@@ -48,6 +48,14 @@ std::vector<double> meridional_stations(double length, std::vector<double> break
   return s;
 }
 
+std::vector<double> uniform_stations(double length, int elements) {
+  if (elements < 1) throw std::invalid_argument("tyre mesh: need at least 1 meridional element");
+  std::vector<double> s(elements + 1);
+  for (int k = 0; k <= elements; ++k) s[k] = length * k / elements;
+  s.back() = length;
+  return s;
+}
+
 int zone_at(const TyreDescription& tyre, double s) {
   if (tyre.zones.empty()) throw std::invalid_argument("tyre: no zones");
   const double u = std::abs(s);
@@ -68,26 +76,26 @@ TyreMesh build_tyre_mesh(const TyreDescription& tyre, const MeshSettings& settin
   const MeridianProfile half(tyre.profile);
   const double length = half.length();
 
-  // Zone ends must be element edges; the tread edge too, unless it would make a sliver element or there
-  // are too few elements for it.
-  std::vector<double> breaks;
-  for (std::size_t k = 0; k + 1 < tyre.zones.size(); ++k) breaks.push_back(tyre.zones[k].s_end);
   std::vector<double> stations;
-  const double min_gap = 0.5 * length / settings.meridional_elements;
-  const bool tread_break = tyre.tread_end_s > min_gap && tyre.tread_end_s < length - min_gap &&
-                           std::none_of(breaks.begin(), breaks.end(),
-                                        [&](double b) { return std::abs(b - tyre.tread_end_s) < min_gap; }) &&
-                           settings.meridional_elements >= static_cast<int>(breaks.size()) + 2;
-  if (tread_break) {
-    std::vector<double> with_tread = breaks;
-    with_tread.push_back(tyre.tread_end_s);
-    stations = meridional_stations(length, with_tread, settings.meridional_elements);
+  if (settings.meridional_grading == MeshSettings::MeridionalGrading::uniform_arc_length) {
+    stations = uniform_stations(length, settings.meridional_elements);
   } else {
+    // Zone ends must be element edges; the tread edge too, unless it would make a sliver element or there
+    // are too few elements for it.
+    std::vector<double> breaks;
+    for (std::size_t k = 0; k + 1 < tyre.zones.size(); ++k) breaks.push_back(tyre.zones[k].s_end);
+    const double min_gap = 0.5 * length / settings.meridional_elements;
+    const bool tread_break = tyre.tread_end_s > min_gap && tyre.tread_end_s < length - min_gap &&
+                             std::none_of(breaks.begin(), breaks.end(),
+                                          [&](double b) { return std::abs(b - tyre.tread_end_s) < min_gap; }) &&
+                             settings.meridional_elements >= static_cast<int>(breaks.size()) + 2;
+    if (tread_break) breaks.push_back(tyre.tread_end_s);
     stations = meridional_stations(length, breaks, settings.meridional_elements);
   }
 
   TyreMesh result;
   result.half_model = settings.half_model;
+  result.meridional_grading = settings.meridional_grading;
   result.profile = settings.half_model ? half : half.mirrored();
   std::vector<double> s_values;
   if (settings.half_model) {

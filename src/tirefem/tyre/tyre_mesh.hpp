@@ -2,9 +2,12 @@
 // The tyre as a mesh of three-layer shell elements: a surface of revolution about the wheel axis
 // (parallel to x, at height axis_z above the road), u = meridian arc length s, v = angle φ.
 //
-// Meridional stations: the meridian is cut at the zone ends and at the tread edge, and the elements are
-// shared out over these pieces in proportion to their length (at least one each, largest remainders get
-// the rest), uniform within a piece. So every element lies in one zone and on one side of the tread edge.
+// Meridional stations (MeshSettings::meridional_grading). zones (the default): the meridian is cut at the
+// zone ends and at the tread edge, and the elements are shared out over these pieces in proportion to
+// their length (at least one each, largest remainders get the rest), uniform within a piece. So every
+// element lies in one zone and on one side of the tread edge. uniform_arc_length: equal elements in s
+// whatever the zones; an element takes the zone of its centre, and its tread points beyond the tread
+// edge carry no tread (make_tread_points leaves them out).
 // Circumferential stations: circumferential_stations(n, refinement), refined around φ = 0 (the patch).
 // Half model: s from 0 (equator) to L (bead). Full model: s from −L to L on the mirrored profile, with
 // twice meridional_elements elements.
@@ -31,6 +34,7 @@ struct TyreMesh {
   double axis_z = 0.0;
   MeridianProfile profile;  // the profile the mesh was built on (mirrored in the full model)
   bool half_model = true;
+  MeshSettings::MeridionalGrading meridional_grading = MeshSettings::MeridionalGrading::zones;
 
   // Meridian arc length of a node pair.
   double pair_s(int pair) const { return mesh.u_values[pair % mesh.u_nodes()]; }
@@ -41,6 +45,9 @@ TyreMesh build_tyre_mesh(const TyreDescription& tyre, const MeshSettings& settin
 
 // Meridional stations of the half model, 0 … L (see above). `breaks` are the interior cut points.
 std::vector<double> meridional_stations(double length, std::vector<double> breaks, int elements);
+
+// Equal steps in s: 0, L/n, …, L.
+std::vector<double> uniform_stations(double length, int elements);
 
 // Index of the zone containing |s| (the last zone also takes anything beyond its end).
 int zone_at(const TyreDescription& tyre, double s);
