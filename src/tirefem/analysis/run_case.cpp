@@ -239,9 +239,10 @@ class SharedFootprints {
 
  private:
   static std::string key(const MeshSettings& m, const SupportDescription& s, double load, double tolerance) {
-    std::string k = fmt::format("{} {} {} {:a} | {} {:a} | {:a} {:a}", m.circumferential_elements,
+    std::string k = fmt::format("{} {} {} {:a} {} | {} {:a} | {:a} {:a}", m.circumferential_elements,
                                 m.meridional_elements, m.half_model, m.circumferential_refinement,
-                                static_cast<int>(s.kind), s.drum_diameter, load, tolerance);
+                                static_cast<int>(m.meridional_grading), static_cast<int>(s.kind), s.drum_diameter,
+                                load, tolerance);
     for (const auto& t : s.terms) k += fmt::format(" {:a} {} {}", t.coefficient, t.x_power, t.y_power);
     return k;
   }
@@ -366,7 +367,8 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     study("footprint '" + study_case.name + "'", [&] {
       const StaticContactResult r =
           run_footprint(tm, c.tyre, c.inflation, c.contact, study_case, progress, &tyres.inflated(c.mesh));
-      if (!study_case.linear)
+      // Shared only as a rolling study would solve it: nonlinear, at a target load, δz from the undeformed tyre.
+      if (!study_case.linear && !study_case.deflection && study_case.deflection_from == DeflectionOrigin::undeformed)
         footprints.keep(c.mesh, study_case.support, study_case.target_load, study_case.load_tolerance, r);
       write_csv(folder.path(r.name + "/load_points.csv"), load_curve_table(r));
       if (!r.completed) {
