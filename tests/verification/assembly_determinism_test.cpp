@@ -28,17 +28,13 @@ Assembled assemble_with_threads(NonlinearProblem& problem, const Eigen::VectorXd
 bool same_bits(const double* a, const double* b, std::size_t n) { return std::memcmp(a, b, n * sizeof(double)) == 0; }
 
 TEST(AssemblyDeterminism, SameBitsOnOneTwoAndThreeThreads) {
-  const Case& c = example_case();
-  const TyreMesh tm = build_tyre_mesh(c.tyre, coarse_mesh(24, 8));
-  ManualContactRun run(tm, c.tyre, c.inflation, test_contact_settings(ContactSettings::Iteration::single_loop),
-                       plane_support());
-  run.contact->set_deflection(12.0);
-  run.contact->release_region();
-  const Eigen::VectorXd& u = run.inflated.displacement;
-  const Assembled one = assemble_with_threads(*run.problem, u, 1);
+  TyrePressedOntoPlane pressed;
+  NonlinearProblem& problem = *pressed.run.problem;
+  const Eigen::VectorXd& u = pressed.inflated();
+  const Assembled one = assemble_with_threads(problem, u, 1);
   ASSERT_GT(one.residual.norm(), 0.0);
   for (int threads : {2, 3}) {
-    const Assembled many = assemble_with_threads(*run.problem, u, threads);
+    const Assembled many = assemble_with_threads(problem, u, threads);
     EXPECT_TRUE(same_bits(one.residual.data(), many.residual.data(), one.residual.size())) << threads << " threads";
     ASSERT_EQ(one.tangent.size(), many.tangent.size());
     EXPECT_TRUE(same_bits(one.tangent.data(), many.tangent.data(), one.tangent.size())) << threads << " threads";

@@ -153,4 +153,19 @@ struct ManualContactRun {
   std::unique_ptr<DeflectionPath> path;
 };
 
+// The example tyre on a coarse 24 × 8 mesh, inflated, with the plane raised 12 mm into it (the contact
+// forms at a deformed state: many points in contact, single-loop region), not yet solved.
+struct TyrePressedOntoPlane {
+  TyrePressedOntoPlane()
+      : tm(build_tyre_mesh(example_case().tyre, coarse_mesh(24, 8))),
+        run(tm, example_case().tyre, example_case().inflation,
+            test_contact_settings(ContactSettings::Iteration::single_loop), plane_support()) {
+    run.contact->set_deflection(12.0);
+    run.contact->release_region();
+  }
+  const Eigen::VectorXd& inflated() const { return run.inflated.displacement; }
+  TyreMesh tm;
+  ManualContactRun run;
+};
+
 }  // namespace tirefem::verification

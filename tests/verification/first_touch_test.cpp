@@ -77,8 +77,10 @@ TEST(FirstTouch, IsMinusTheCrownGrowthOnPlaneAndDrum) {
               p.tread_points[deepest].v, p.final_state.tread[deepest].position.z());
   EXPECT_LT(p.tread_points[deepest].u, 2.0);
   EXPECT_LT(std::abs(p.tread_points[deepest].v), 0.01);
-  EXPECT_NEAR(p.final_state.tread[deepest].position.z(), p.first_touch_deflection_mm, 1e-12);
-  EXPECT_NEAR(p.final_state.tread[deepest].penetration, 0.0, 1e-12);
+  // To the contact solve's remainder: the solve at the first touch starts from the inflated state and
+  // moves it by the Newton tolerance (residual 1e-8 of ~0.5 mm displacements: nanometres), not to 1e-12.
+  EXPECT_NEAR(p.final_state.tread[deepest].position.z(), p.first_touch_deflection_mm, 1e-9);
+  EXPECT_NEAR(p.final_state.tread[deepest].penetration, 0.0, 1e-9);
   EXPECT_LT(p.first_touch_deflection_mm, 0.0);
   EXPECT_NEAR(p.first_touch_deflection_mm, -growth, 0.02);
   EXPECT_NEAR(d.first_touch_deflection_mm, p.first_touch_deflection_mm, 0.02);
@@ -112,7 +114,12 @@ TEST(FirstTouch, LoadCurveFromFirstTouchIsTheShiftedCurve) {
   EXPECT_LT(rel, 1e-6);
   EXPECT_EQ(pa.contact_area_mm2, pb.contact_area_mm2);
   EXPECT_LT(std::abs(b.points[0].patch.Qz_N), 1e-6);
-  EXPECT_EQ(b.points[0].patch.contact_area_mm2, 0.0);
+  // Only the point(s) at the lowest spot, pressed by the solve's remainder (nanometres, see
+  // IsMinusTheCrownGrowthOnPlaneAndDrum), may count as touching: at most the tread points of one element.
+  double largest_weight = 0.0;
+  for (const TreadPoint& p : b.tread_points) largest_weight = std::max(largest_weight, p.weight);
+  const int per_element = settings().quadrature * settings().quadrature;
+  EXPECT_LE(b.points[0].patch.contact_area_mm2, per_element * largest_weight);
   EXPECT_GT(a.points[0].patch.Qz_N, 1e-3 * pa.Qz_N);
 }
 

@@ -45,13 +45,10 @@ double energy_gradient_error(NonlinearProblem& problem, const Eigen::VectorXd& u
 TEST(FormEnergy, InflatedTyreInContactIsTheGradientOfItsEnergy) {
   // Shell + pressure (closed by rim and symmetry plane: its energy is −p V) + contact, at the inflated
   // state pressed 12 mm onto the plane (a deformed state, many points in contact), single-loop region.
-  const Case& c = example_case();
-  const TyreMesh tm = build_tyre_mesh(c.tyre, coarse_mesh(24, 8));
-  ManualContactRun run(tm, c.tyre, c.inflation, test_contact_settings(ContactSettings::Iteration::single_loop),
-                       plane_support());
-  run.contact->set_deflection(12.0);
-  run.contact->release_region();
-  const Eigen::VectorXd& u = run.inflated.displacement;
+  TyrePressedOntoPlane pressed;
+  ManualContactRun& run = pressed.run;
+  const TyreMesh& tm = pressed.tm;
+  const Eigen::VectorXd& u = pressed.inflated();
   ASSERT_TRUE(run.problem->has_potential());
   int in_contact = 0;
   for (const TreadPointState& s : run.contact->evaluate(u)) in_contact += s.penetration > 0;
