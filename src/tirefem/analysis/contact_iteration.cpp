@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -112,13 +114,24 @@ DeflectionPath::Step DeflectionPath::advance_to(double deflection, int max_cutba
   Step step;
   double from = nearest(deflection).deflection;
   double increment = deflection - from;
+  const bool stable_mode = settings_.equilibrium == ContactSettings::Equilibrium::stable;
+  // A solve to resume (stable mode): its target and its last iterate.
+  std::optional<std::pair<double, Eigen::VectorXd>> resume;
+  int escapes = 0;
+  double escaped_shift = 0.0;
   while (true) {
     const bool last = std::abs(increment) >= std::abs(deflection - from) - 1e-12;
     const double target = last ? deflection : from + increment;
-    Eigen::VectorXd u = predict(target);
+    const bool resuming = resume && resume->first == target;
+    Eigen::VectorXd u = resuming ? std::move(resume->second) : predict(target);
+    resume.reset();
+    const Eigen::VectorXd start = u;
     contact_.set_deflection(target);
     const ContactSolveOutcome outcome = solve_contact(newton_, contact_, u, settings_);
     step.newton_iterations += outcome.newton_iterations;
+    // Instabilities passed on the way to the point count, whichever solve passed them.
+    escapes += outcome.escapes;
+    escaped_shift = std::max(escaped_shift, outcome.escaped_shift);
     if (!outcome.converged) {
       if (step.cutbacks >= max_cutbacks) {
         step.failure = fmt::format(
@@ -129,6 +142,18 @@ DeflectionPath::Step DeflectionPath::advance_to(double deflection, int max_cutba
         return step;
       }
       ++step.cutbacks;
+      // Seeking a stable state, Newton lowers the energy at every shifted step. A solve that left an
+      // unstable equilibrium runs down a long slope towards the buckled (wrinkled) state, and may run
+      // out of iterations on the way: it is resumed from its last iterate when that lies lower than its
+      // start. Halving the increment instead would repeat the same escape from a state next to the same
+      // saddle (or, at the first load point, the very same solve: its increment from the start is 0).
+      if (stable_mode && outcome.escapes > 0 && u.allFinite()) {
+        const std::optional<EnergyChange> e = newton_.problem().energy_change(start, u, 1.0);
+        if (e && std::isfinite(e->change) && e->change < 0) {
+          resume.emplace(target, std::move(u));
+          continue;
+        }
+      }
       increment *= 0.5;
       continue;
     }
@@ -138,6 +163,8 @@ DeflectionPath::Step DeflectionPath::advance_to(double deflection, int max_cutba
     if (last) {
       step.converged = true;
       step.last = outcome;
+      step.last.escapes = escapes;
+      step.last.escaped_shift = escaped_shift;
       return step;
     }
   }

@@ -46,6 +46,7 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
   Eigen::VectorXd base, step;
   double slope = 0.0, step_shift = 0.0;
   bool pending = false;
+  bool restart = false;  // the last iteration pushed u off a saddle: the next step is a first step
   for (int it = 0;; ++it) {
     problem_.evaluate(u, load_factor, true);
     Eigen::VectorXd r = dofs.gather(problem_.system().residual());
@@ -73,6 +74,24 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
           fraction = extended;
           ++out.extensions;
         }
+      }
+      // The energy falls ever faster along the step (negative curvature: the state is moving off an
+      // instability towards the buckled or wrinkled one): the secant has no minimum to aim at, so the
+      // step is doubled while the energy keeps falling. Without this the heavily shifted steps only
+      // creep down the slope and Newton runs out of iterations before it reaches the stable state.
+      else if (descend && end_slope < 0 && end_slope <= slope) {
+        const std::optional<EnergyChange> at_end = problem_.energy_change(base, u, load_factor);
+        double best = at_end ? at_end->change : 0.0;
+        for (double t = 2.0; at_end && t <= kMaxExtension; t *= 2.0) {
+          Eigen::VectorXd trial = base;
+          dofs.scatter_add(t * step, trial);
+          const std::optional<EnergyChange> e = problem_.energy_change(base, trial, load_factor);
+          if (!e || !std::isfinite(e->change) || e->change >= best) break;
+          best = e->change;
+          u = std::move(trial);
+          fraction = t;
+        }
+        if (fraction > 1.0) ++out.extensions;
       }
       // Otherwise a shifted step, or one whose end has no finite residual, is cut back to lower the
       // energy by the Armijo amount.
@@ -121,6 +140,12 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
           out.converged = false;
           pending = false;
           increment_norm = std::numeric_limits<double>::infinity();
+          // The pushed state is the start of a new descent: the divergence test and the energy criterion
+          // measure from it, not from the residual of the saddle (round-off small: any later iterate
+          // would look 1e4 times larger and be taken for divergence).
+          first_residual = -1.0;
+          previous_residual = 0.0;
+          restart = true;
           continue;
         }
       }
@@ -156,7 +181,8 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
     dofs.scatter_add(du, u);
     increment_norm = du.norm();
     energy = std::abs(du.dot(r));
-    if (it == 0) first_energy = energy;
+    if (it == 0 || restart) first_energy = energy;
+    restart = false;
     ++out.iterations;
     ++total_iterations_;
   }
