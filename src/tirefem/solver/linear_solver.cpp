@@ -83,6 +83,9 @@ void SparseDirectSolver::factorize_lu(const SparseMatrix& matrix) {
     // No iterative refinement in UMFPACK's solve: it triples the cost of each solve, and Newton (or
     // GMRES around a reused factorisation) corrects the residual anyway.
     s.lu.umfpackControl()(UMFPACK_IRSTEP) = 0;
+    // Nested dissection (METIS on A + Aᵀ) rather than the default AMD: the rolling tangent of the 80 × 46
+    // model takes 3.25 instead of 3.77 GFlop per LU (UMFPACK's own count, −14%).
+    s.lu.umfpackControl()(UMFPACK_ORDERING) = UMFPACK_ORDERING_METIS;
     const auto t0 = std::chrono::steady_clock::now();
     s.lu.analyzePattern(matrix);
     s.lu_analysed = true;
