@@ -148,6 +148,16 @@ DofMap clamped_at_root(const ShellMesh& mesh) {
   return dofs;
 }
 
+// The cantilever clamped at its root with a dead load `total` shared by its tip nodes.
+std::unique_ptr<NonlinearProblem> tip_loaded_cantilever(const CantileverModel& m, const Eigen::Vector3d& total) {
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(m.mesh.dof_count());
+  for (int p : m.tip) add_split_force(f, p, total / static_cast<double>(m.tip.size()));
+  std::vector<std::unique_ptr<Form>> forms;
+  forms.push_back(std::make_unique<ShellInternalForce>(m.mesh, m.sections, Kinematics::nonlinear));
+  forms.push_back(std::make_unique<NodalLoadForm>(f));
+  return std::make_unique<NonlinearProblem>(clamped_at_root(m.mesh), std::move(forms));
+}
+
 std::unique_ptr<CantileverModel> cantilever_model(const Cantilever& c) {
   auto m = std::make_unique<CantileverModel>();
   const double d = face_distance(c.shell);
@@ -167,15 +177,8 @@ TEST(ShellBenchmarks, SzeCantileverEndShear) {
   const Cantilever c;
   const auto m = cantilever_model(c);
   const ShellMesh& mesh = m->mesh;
-  DofMap dofs(mesh.dof_count());
-  dofs.fix(both_faces(mesh.edge_pairs(GridEdge::u_min), {0, 1, 2}));
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(mesh.dof_count());
-  for (int p : m->tip) add_split_force(f, p, Eigen::Vector3d(0, 0, 4.0 / m->tip.size()));
-  std::vector<std::unique_ptr<Form>> forms;
-  forms.push_back(std::make_unique<ShellInternalForce>(mesh, m->sections, Kinematics::nonlinear));
-  forms.push_back(std::make_unique<NodalLoadForm>(f));
-  NonlinearProblem problem(dofs, std::move(forms));
-  NewtonSolver newton(problem, benchmark_newton_settings());
+  const auto problem = tip_loaded_cantilever(*m, Eigen::Vector3d(0, 0, 4.0));
+  NewtonSolver newton(*problem, benchmark_newton_settings());
   Eigen::VectorXd u = Eigen::VectorXd::Zero(mesh.dof_count());
   size_t next = 0;
   for (int k = 1; k <= 40; ++k) {  // load steps of P_max/40 up to each tabulated level
@@ -241,15 +244,9 @@ TEST(ShellBenchmarks, CantileverColumnPastItsEulerLoadIsReportedUnstable) {
   const auto m = cantilever_model(c);
   const ShellMesh& mesh = m->mesh;
   const double ei = 100.0, p_cr = kPi * kPi * ei / (4 * c.length * c.length);
-  const DofMap dofs = clamped_at_root(mesh);
   const auto solve = [&](double ratio) {
-    Eigen::VectorXd f = Eigen::VectorXd::Zero(mesh.dof_count());
-    for (int q : m->tip) add_split_force(f, q, Eigen::Vector3d(-ratio * p_cr / m->tip.size(), 0, 0));
-    std::vector<std::unique_ptr<Form>> forms;
-    forms.push_back(std::make_unique<ShellInternalForce>(mesh, m->sections, Kinematics::nonlinear));
-    forms.push_back(std::make_unique<NodalLoadForm>(f));
-    NonlinearProblem problem(dofs, std::move(forms));
-    NewtonSolver newton(problem, benchmark_newton_settings());
+    const auto problem = tip_loaded_cantilever(*m, Eigen::Vector3d(-ratio * p_cr, 0, 0));
+    NewtonSolver newton(*problem, benchmark_newton_settings());
     Eigen::VectorXd u = Eigen::VectorXd::Zero(mesh.dof_count());
     const NewtonOutcome out = newton.solve(u, 1.0);
     const Eigen::Vector3d tip = mean_mid_displacement(u, m->tip);

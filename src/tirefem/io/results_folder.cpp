@@ -163,7 +163,6 @@ fs::path ResultsFolder::commit(std::string_view suffix) {
         rename_or_throw(temp_dir_ / e, target / e);
         moved_in.push_back(e);
       }
-      marker::write(target, manifest);
     } catch (const std::exception&) {
       for (const std::string& e : moved_in) fs::rename(target / e, temp_dir_ / e, ec);
       for (const std::string& e : moved_aside) fs::rename(aside / e, target / e, ec);

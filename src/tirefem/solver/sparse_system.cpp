@@ -70,14 +70,10 @@ void BlockBatch::set(int item, std::span<const int> dofs, const double* f, const
 }
 
 void SparseSystem::add(std::span<const int> dofs, const double* f, const double* k, bool with_tangent) {
-  BlockBatch::Slot slot;
-  slot.n = static_cast<int>(dofs.size());
-  slot.with_tangent = with_tangent;
-  if (slot.n > BlockBatch::kMaxDofs) throw std::invalid_argument("SparseSystem::add: block too large");
-  std::copy_n(dofs.data(), slot.n, slot.dofs.begin());
-  std::copy_n(f, slot.n, slot.f.begin());
-  if (with_tangent) slot.k.assign(k, k + slot.n * slot.n);
-  add_slot(slot, 0, dofs_.equation_count(), 0, dofs_.dof_count());
+  BlockBatch one;
+  one.reset(1);
+  one.set(0, dofs, f, k, with_tangent);
+  add_slot(one.slots_[0], 0, dofs_.equation_count(), 0, dofs_.dof_count());
 }
 
 void SparseSystem::add(const BlockBatch& batch) {
