@@ -169,6 +169,7 @@ class StaticContactRun {
     ns.max_iterations = settings.max_newton_iterations;
     ns.residual_tolerance = settings.residual_tolerance;
     ns.reuse_factorization = settings.reuse_factorizations;
+    ns.adaptive_krylov_tolerance = true;
     ns.stable_equilibrium = settings.equilibrium == ContactSettings::Equilibrium::stable;
     newton_ = std::make_unique<NewtonSolver>(*problem_, ns);
     for (const TreadPointState& p : contact_->evaluate(result_.inflation.displacement))

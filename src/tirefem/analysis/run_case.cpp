@@ -1,6 +1,8 @@
 #include "tirefem/analysis/run_case.hpp"
 
+#include <atomic>
 #include <chrono>
+#include <mutex>
 #include <map>
 #include <memory>
 #include <tuple>
@@ -13,7 +15,10 @@
 
 #include "tirefem/analysis/footprint.hpp"
 #include "tirefem/analysis/inflation.hpp"
+#include "tirefem/analysis/parallel_chains.hpp"
 #include "tirefem/analysis/rolling.hpp"
+#include "tirefem/analysis/shared_states.hpp"
+#include "tirefem/analysis/study_reports.hpp"
 #include "tirefem/io/json_summary.hpp"
 #include "tirefem/io/results_folder.hpp"
 #include "tirefem/results/footprint_report.hpp"
@@ -48,106 +53,6 @@ void add_krylov(toml::table& t, const SolveCounters& c) {
   t.insert("krylov_iterations", c.krylov_iterations);
 }
 
-// Writes the plots (gnuplot may be missing: warn once) and guards every report: a report that cannot be
-// made (e.g. no ply, hence no cord tension to plot) is skipped with a note, never a failure that would
-// discard the solve.
-class ReportWriter {
- public:
-  ReportWriter(const ResultsFolder& folder, const ProgressSink& progress) : folder_(folder), progress_(progress) {}
-  void plot(const std::string& stem, const Plot& p) {
-    if (p.series.empty()) return skip(stem, "nothing to plot");
-    note(write_plot(folder_.path("plots/" + stem), p));
-  }
-  void heatmap(const std::string& stem, const HeatMap& m) { note(write_heatmap(folder_.path("plots/" + stem), m)); }
-  // Runs `write`; an exception (other than an interrupt) skips the rest of that report with a note.
-  template <class F>
-  void attempt(const std::string& report_name, F&& write) {
-    try {
-      write();
-    } catch (const RunInterrupted&) {
-      throw;
-    } catch (const std::exception& e) {
-      skip(report_name, e.what());
-    }
-  }
-  const std::vector<std::string>& skipped() const { return skipped_; }
-
- private:
-  void skip(const std::string& name, const std::string& why) {
-    skipped_.push_back(fmt::format("{}: {}", name, why));
-    report(progress_, fmt::format("note: report '{}' skipped: {}", name, why));
-  }
-  void note(bool rendered) {
-    if (!rendered && !warned_) report(progress_, "warning: gnuplot not found, plots written as scripts only");
-    warned_ = warned_ || !rendered;
-  }
-  const ResultsFolder& folder_;
-  ProgressSink progress_;
-  bool warned_ = false;
-  std::vector<std::string> skipped_;
-};
-
-// Everything about one loaded state: VTU of the shell and the support, the tread points, the pressure
-// maps, the cord strains under the patch centre (Fig. 5) and the belt tension round the equator (Fig. 8).
-void write_loaded_state(const ResultsFolder& folder, ReportWriter& plots, const TyreMesh& tm, const Case& c,
-                        const StaticContactResult& r) {
-  const std::string& n = r.name;
-  const auto loaded = evaluate_element_results(tm, c.tyre, r.final_state.displacement, r.kinematics);
-  const auto inflated =
-      evaluate_element_results(tm, c.tyre, r.inflation.displacement, r.inflation.kinematics);
-  write_vtu(folder.path(n + "/shell.vtu"), loaded_shell_vtu(tm, c.tyre, r, loaded));
-  write_vtu(folder.path(n + "/support.vtu"), support_vtu(r));
-  write_csv(folder.path(n + "/tread_points.csv"), tread_points_table(r));
-  plots.heatmap(n + "_pressure_s_phi", pressure_map_s_phi(r));
-  plots.heatmap(n + "_footprint", footprint_map_xy(r));
-  const CsvTable meridian_loaded = meridian_table(tm, c.tyre, r.final_state.displacement, loaded);
-  const CsvTable meridian_inflated = meridian_table(tm, c.tyre, r.inflation.displacement, inflated);
-  write_csv(folder.path(n + "/meridian_under_patch.csv"), meridian_loaded);
-  plots.plot(n + "_cord_strain", meridian_cord_strain_plot({{"inflated", &meridian_inflated},
-                                                            {"loaded", &meridian_loaded}}));
-  const CsvTable belt = circumferential_belt_table(tm, c.tyre, {{"inflated", &inflated}, {"loaded", &loaded}});
-  write_csv(folder.path(n + "/belt_tension_equator.csv"), belt);
-  plots.plot(n + "_belt_tension", circumferential_belt_plot(belt));
-}
-
-// A rolling study: the states and the sweep as tables, per state the tread points (CSV and point cloud),
-// the loaded shell and the traction map (Fig. 7), and the belt tension of all states together with the
-// inflated and the static one (Fig. 8).
-void write_rolling(const ResultsFolder& folder, ReportWriter& plots, const TyreMesh& tm, const Case& c,
-                   const RollingResult& r) {
-  const std::string& n = r.name;
-  write_csv(folder.path(n + "/states.csv"), rolling_states_table(r));
-  write_csv(folder.path(n + "/footprint_load_points.csv"), load_curve_table(r.footprint));
-  if (!r.sweep.empty()) {
-    write_csv(folder.path(n + "/slip_sweep.csv"), slip_sweep_table(r));
-    plots.plot(n + "_slip_curve", slip_sweep_plot(r));
-  }
-  if (!r.footprint.completed) return;
-  const auto inflated = evaluate_element_results(tm, c.tyre, r.footprint.inflation.displacement, Kinematics::nonlinear);
-  const auto loaded = evaluate_element_results(tm, c.tyre, r.footprint.final_state.displacement, Kinematics::nonlinear);
-  std::vector<std::vector<ElementResult>> rolling;
-  std::vector<std::string> labels;
-  for (const RollingStateResult& s : r.states) {
-    if (!s.converged) continue;
-    const std::string dir = n + "/" + s.name + "/";
-    write_csv(folder.path(dir + "tread_points.csv"), rolling_tread_table(r, s));
-    write_vtu(folder.path(dir + "tread_points.vtu"), tread_points_vtu(r, s));
-    StaticContactResult as_static = r.footprint;  // the loaded shell with this state's displacement
-    as_static.final_state.displacement = s.displacement;
-    as_static.final_state.tread = s.normal;
-    rolling.push_back(evaluate_element_results(tm, c.tyre, s.displacement, Kinematics::nonlinear));
-    labels.push_back(s.name);
-    write_vtu(folder.path(dir + "shell.vtu"), loaded_shell_vtu(tm, c.tyre, as_static, rolling.back()));
-    plots.heatmap(n + "_" + s.name + "_traction", traction_map_s_phi(r, s));
-  }
-  std::vector<std::pair<std::string, const std::vector<ElementResult>*>> belt{{"inflated", &inflated},
-                                                                              {"static", &loaded}};
-  for (std::size_t i = 0; i < rolling.size(); ++i) belt.emplace_back(labels[i], &rolling[i]);
-  const CsvTable table = circumferential_belt_table(tm, c.tyre, belt);
-  write_csv(folder.path(n + "/belt_tension_equator.csv"), table);
-  plots.plot(n + "_belt_tension", circumferential_belt_plot(table));
-}
-
 // Wall time per phase of the run, printed at the end and kept in summary.json. A shared inflation is a
 // phase of its own, taken out of the study during which it was solved.
 class PhaseTimes {
@@ -159,6 +64,7 @@ class PhaseTimes {
     nested_ = 0.0;
   }
   void end() { phases_.emplace_back(name_, seconds(start_) - nested_); }
+  void add(std::string name, double s) { phases_.emplace_back(std::move(name), s); }
   void nested(std::string name, double s) {
     phases_.emplace_back(std::move(name), s);
     nested_ += s;
@@ -183,76 +89,40 @@ class PhaseTimes {
   std::vector<std::pair<std::string, double>> phases_;
 };
 
-// One tyre mesh and one nonlinear inflation per mesh setting, shared by all studies of a run: the
-// inflation is solved once per tyre and mesh, not once per study.
-class InflatedTyres {
- public:
-  InflatedTyres(const Case& c, const ProgressSink& progress, PhaseTimes& times)
-      : case_(c), progress_(progress), times_(times) {}
-  const TyreMesh& mesh(const MeshSettings& m) {
-    Entry& e = entry(m);
-    if (!e.mesh) e.mesh = std::make_unique<TyreMesh>(build_tyre_mesh(case_.tyre, m));
-    return *e.mesh;
-  }
-  // The nonlinear inflated state of that mesh at the case's pressure.
-  const InflationResult& inflated(const MeshSettings& m) {
-    Entry& e = entry(m);
-    if (!e.inflated) {
-      e.inflated = inflate_for_contact(mesh(m), case_.inflation, progress_);
-      times_.nested(fmt::format("inflation ({} x {}, shared)", m.circumferential_elements, m.meridional_elements),
-                    e.inflated->counters.wall_s);
-      if (!e.inflated->converged) throw std::runtime_error(e.inflated->failure);
-    }
-    return *e.inflated;
-  }
-  void adopt(const MeshSettings& m, const InflationResult& r) { entry(m).inflated = r; }
-
- private:
-  struct Entry {
-    std::unique_ptr<TyreMesh> mesh;  // stable address: forms refer to it
-    std::optional<InflationResult> inflated;
-  };
-  Entry& entry(const MeshSettings& m) {
-    return entries_[{m.circumferential_elements, m.meridional_elements, m.half_model, m.circumferential_refinement,
-                      static_cast<int>(m.meridional_grading)}];
-  }
-  const Case& case_;
-  ProgressSink progress_;
-  PhaseTimes& times_;
-  std::map<std::tuple<int, int, bool, double, int>, Entry> entries_;
-};
-
-// Completed static footprints by mesh, support and target load: a rolling study at the load and on the
-// support of an earlier footprint (a [[footprint]] study on the case's mesh, or another rolling study)
-// starts from it instead of solving it again.
-class SharedFootprints {
- public:
-  const StaticContactResult* find(const MeshSettings& m, const SupportDescription& s, double load,
-                                  double tolerance) const {
-    const auto it = entries_.find(key(m, s, load, tolerance));
-    return it == entries_.end() ? nullptr : &it->second;
-  }
-  void keep(const MeshSettings& m, const SupportDescription& s, double load, double tolerance,
-            const StaticContactResult& r) {
-    if (r.completed) entries_.try_emplace(key(m, s, load, tolerance), r);
-  }
-
- private:
-  static std::string key(const MeshSettings& m, const SupportDescription& s, double load, double tolerance) {
-    std::string k = fmt::format("{} {} {} {:a} {} | {} {:a} | {:a} {:a}", m.circumferential_elements,
-                                m.meridional_elements, m.half_model, m.circumferential_refinement,
-                                static_cast<int>(m.meridional_grading), static_cast<int>(s.kind), s.drum_diameter,
-                                load, tolerance);
-    for (const auto& t : s.terms) k += fmt::format(" {:a} {} {}", t.coefficient, t.x_power, t.y_power);
-    return k;
-  }
-  std::map<std::string, StaticContactResult> entries_;
-};
-
 std::string incomplete_message(const StaticContactResult& r) {
   return fmt::format("'{}' stopped at δz = {:.3g} mm: {}", r.name, r.final_state.deflection_mm, r.failure);
 }
 
+
+// One study's solve, kept until its results are written (in the case's order, whatever order the
+// studies ran in).
+struct StudyRun {
+  std::string phase;  // "load curve 'plane'", ...
+  double seconds = 0.0;
+  std::string error;  // the study threw: why
+  std::optional<StaticContactResult> contact;
+  std::optional<RollingResult> rolling;
+};
+
+// The progress of studies that run at the same time: one line at a time, each prefixed by its study's
+// name when more than one study runs; a stop (interrupt, or another study's worker failing) ends the study
+// at its next progress line.
+class StudyProgress {
+ public:
+  StudyProgress(const ProgressSink& progress, const std::atomic<bool>& stop) : progress_(progress), stop_(stop) {}
+  ProgressSink sink(const std::string& name, bool prefixed) {
+    return [this, prefix = prefixed ? "[" + name + "] " : std::string()](const std::string& message) {
+      if (stop_) throw RunInterrupted();
+      const std::lock_guard lock(mutex_);
+      if (progress_) progress_(prefix + message);
+    };
+  }
+
+ private:
+  ProgressSink progress_;
+  const std::atomic<bool>& stop_;
+  std::mutex mutex_;
+};
 }  // namespace
 
 RunOutcome run_case(const Case& c, const RunOptions& options) {
@@ -265,7 +135,9 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
   };
   PhaseTimes times;
   times.begin("mesh");
-  InflatedTyres tyres(c, progress, times);
+  InflatedTyres tyres(c, progress, [&](const MeshSettings& m, double s) {
+    times.nested(fmt::format("inflation ({} x {}, shared)", m.circumferential_elements, m.meridional_elements), s);
+  });
   const TyreMesh& tm = tyres.mesh(c.mesh);
   const int equations = tm.mesh.dof_count() - static_cast<int>(tm.fixed_dofs.size());
   report(progress, fmt::format("{}: {} x {} {} model, {} elements, {} DOF ({} free)", c.title,
@@ -286,23 +158,7 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
                                            {"model", c.mesh.half_model ? "half" : "full"}}}};
 
   times.end();
-  ReportWriter plots(folder, progress);
-  toml::array incomplete;
-  // A study that throws (e.g. its first contact state does not converge) stops short like one whose load
-  // path ends early; the other studies go on.
-  auto study = [&](const std::string& name, auto&& run) {
-    times.begin(name);
-    try {
-      run();
-    } catch (const RunInterrupted&) {
-      throw;
-    } catch (const std::exception& e) {
-      const std::string m = fmt::format("{} failed: {}", name, e.what());
-      report(progress, "warning: " + m);
-      incomplete.push_back(m);
-    }
-    times.end();
-  };
+  ReportWriter inflation_plots(folder, progress);
   if (c.inflation.enabled) {
     times.begin("inflation");
     const InflationResult r = run_inflation(tm, c.inflation, progress);
@@ -313,8 +169,9 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     const CsvTable table = meridian_table(tm, c.tyre, r.displacement, elements);
     write_csv(folder.path("inflation_meridian.csv"), table);
     write_vtu(folder.path("inflation.vtu"), shell_vtu(tm, c.tyre, r.displacement, elements));
-    plots.attempt("inflation plots", [&] {
-      for (const auto& [name, plot] : meridian_plots(table, tm, r.displacement)) plots.plot("inflation_" + name, plot);
+    inflation_plots.attempt("inflation plots", [&] {
+      for (const auto& [name, plot] : meridian_plots(table, tm, r.displacement))
+        inflation_plots.plot("inflation_" + name, plot);
     });
     toml::table inflation{{"pressure_MPa", c.inflation.pressure},
                           {"theory", c.inflation.linear ? "linear" : "nonlinear"},
@@ -336,104 +193,199 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     times.end();
   }
 
-  std::vector<StaticContactResult> curves;
-  toml::array curve_summaries, footprint_summaries, rolling_summaries;
-  for (const LoadCurveStudy& study_case : c.load_curves) {
-    study("load curve '" + study_case.name + "'", [&] {
-      StaticContactResult r =
-          run_load_curve(tm, c.tyre, c.inflation, c.contact, study_case, progress, &tyres.inflated(c.mesh));
-      if (!r.completed) {
-        report(progress, "warning: load curve " + incomplete_message(r) + " (converged points kept)");
-        incomplete.push_back(incomplete_message(r));
+  // The inflated states every study starts from, one per mesh, solved first on all threads. One that does
+  // not converge fails the studies on its mesh (they ask again and get the error).
+  times.begin("inflations of the studies' meshes");
+  for (const RollingStudy& s : c.rolling) {
+    try {
+      tyres.inflated(s.mesh.value_or(c.mesh));
+    } catch (const std::runtime_error&) {
+    }
+  }
+  if (!c.load_curves.empty() || !c.footprints.empty()) {
+    try {
+      tyres.inflated(c.mesh);
+    } catch (const std::runtime_error&) {
+    }
+  }
+  times.end();
+
+  // The studies, as chains of tasks: each study its own chain, except that a rolling study at the load,
+  // support and mesh of an earlier footprint (or rolling study) runs after it, in its chain, and starts
+  // from its footprint. Chains run side by side (parallel_chains.hpp).
+  const int study_count = static_cast<int>(c.load_curves.size() + c.footprints.size() + c.rolling.size());
+  std::vector<StudyRun> runs(study_count);
+  std::vector<TaskChain> chains;
+  std::map<std::string, std::size_t> chain_of_footprint;
+  SharedFootprints footprints;
+  std::atomic<bool> stop{false};
+  StudyProgress study_progress(progress, stop);
+  bool prefixed = false;  // known once the chains are counted; the tasks read it when they run
+  // A study that throws (e.g. its first contact state does not converge) stops short like one whose load
+  // path ends early; the other studies go on.
+  const auto task = [&](int k, std::string phase, std::function<void(const ProgressSink&)> solve) {
+    runs[k].phase = std::move(phase);
+    return [&, k, solve = std::move(solve)] {
+      StudyRun& run = runs[k];
+      const ProgressSink sink = study_progress.sink(run.phase, prefixed);
+      const auto start = std::chrono::steady_clock::now();
+      try {
+        solve(sink);
+      } catch (const RunInterrupted&) {
+        throw;
+      } catch (const std::exception& e) {
+        run.error = fmt::format("{} failed: {}", run.phase, e.what());
+        sink("warning: " + run.error);
       }
-      write_csv(folder.path("load_curve_" + r.name + ".csv"), load_curve_table(r));
-      toml::table t = load_curve_summary(r);
-      t.insert("solver", counters_table(r.counters));
-      add_krylov(*t["solver"].as_table(), r.counters);
-      curve_summaries.push_back(std::move(t));
-      r.final_state.displacement.resize(0);  // keep the curve, not its last state
-      r.inflation.displacement.resize(0);
-      curves.push_back(std::move(r));
+      run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+  };
+  int k = 0;
+  for (const LoadCurveStudy& s : c.load_curves) {
+    chains.push_back({task(k, "load curve '" + s.name + "'", [&, k](const ProgressSink& sink) {
+      runs[k].contact = run_load_curve(tm, c.tyre, c.inflation, c.contact, s, sink, &tyres.inflated(c.mesh));
+    })});
+    ++k;
+  }
+  for (const FootprintStudy& s : c.footprints) {
+    // Shared only as a rolling study would solve it: nonlinear, at a target load, δz from the undeformed tyre.
+    const bool shared = !s.linear && !s.deflection && s.deflection_from == DeflectionOrigin::undeformed;
+    const std::string key = SharedFootprints::key(c.mesh, s.support, s.target_load, s.load_tolerance);
+    chains.push_back({task(k, "footprint '" + s.name + "'", [&, k, shared, key](const ProgressSink& sink) {
+      runs[k].contact = run_footprint(tm, c.tyre, c.inflation, c.contact, s, sink, &tyres.inflated(c.mesh));
+      if (shared) footprints.keep(key, *runs[k].contact);
+    })});
+    if (shared) chain_of_footprint.try_emplace(key, chains.size() - 1);
+    ++k;
+  }
+  for (const RollingStudy& s : c.rolling) {
+    const MeshSettings& settings = s.mesh.value_or(c.mesh);
+    const std::string key = SharedFootprints::key(settings, s.support, s.target_load, s.load_tolerance);
+    auto solve = task(k, "rolling '" + s.name + "'", [&, k, key](const ProgressSink& sink) {
+      const TyreMesh& mesh = tyres.mesh(settings);
+      if (s.mesh)
+        sink(fmt::format("rolling '{}' on its own mesh: {} x {}, {} elements", s.name, settings.circumferential_elements,
+                         settings.meridional_elements, mesh.mesh.element_count()));
+      runs[k].rolling = run_rolling(mesh, c.tyre, c.inflation, c.contact, s, sink, &tyres.inflated(settings),
+                                    footprints.find(key));
+      footprints.keep(key, runs[k].rolling->footprint);
     });
+    const auto it = chain_of_footprint.find(key);
+    if (it != chain_of_footprint.end()) {
+      chains[it->second].push_back(std::move(solve));
+    } else {
+      chains.push_back({std::move(solve)});
+      chain_of_footprint.emplace(key, chains.size() - 1);
+    }
+    ++k;
+  }
+  const WorkerPlan plan = plan_workers(static_cast<int>(chains.size()), omp_get_max_threads());
+  prefixed = plan.workers > 1;
+  if (prefixed)
+    report(progress, fmt::format("{} studies on {} workers at once ({} thread{} each); lines begin with the study's name",
+                                 study_count, plan.workers, plan.threads_per_worker,
+                                 plan.threads_per_worker > 1 ? "s" : ""));
+  const auto studies_start = std::chrono::steady_clock::now();
+  run_chains(chains, plan, stop);
+  const double studies_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - studies_start).count();
+
+  // Results in the case's order.
+  toml::array incomplete;
+  for (const StudyRun& run : runs) {
+    times.add(run.phase, run.seconds);
+    if (!run.error.empty()) incomplete.push_back(run.error);
+  }
+  times.begin("writing the studies' results");
+  ReportWriter plots(folder, progress);
+  toml::array curve_summaries, footprint_summaries, rolling_summaries;
+  std::vector<const StaticContactResult*> curves;
+  k = 0;
+  for (std::size_t i = 0; i < c.load_curves.size(); ++i, ++k) {
+    if (!runs[k].contact) continue;
+    StaticContactResult& r = *runs[k].contact;
+    if (!r.completed) {
+      report(progress, "warning: load curve " + incomplete_message(r) + " (converged points kept)");
+      incomplete.push_back(incomplete_message(r));
+    }
+    write_csv(folder.path("load_curve_" + r.name + ".csv"), load_curve_table(r));
+    toml::table t = load_curve_summary(r);
+    t.insert("solver", counters_table(r.counters));
+    add_krylov(*t["solver"].as_table(), r.counters);
+    curve_summaries.push_back(std::move(t));
+    r.final_state.displacement.resize(0);  // keep the curve, not its last state
+    r.inflation.displacement.resize(0);
+    curves.push_back(&r);
   }
   if (!curves.empty()) {
-    std::vector<const StaticContactResult*> list;
-    for (const auto& r : curves) list.push_back(&r);
-    plots.attempt("load characteristic", [&] { plots.plot("load_characteristic", load_characteristic_plot(list)); });
+    plots.attempt("load characteristic", [&] { plots.plot("load_characteristic", load_characteristic_plot(curves)); });
     summary.insert("load_curves", std::move(curve_summaries));
   }
-  SharedFootprints footprints;
-  for (const FootprintStudy& study_case : c.footprints) {
-    study("footprint '" + study_case.name + "'", [&] {
-      const StaticContactResult r =
-          run_footprint(tm, c.tyre, c.inflation, c.contact, study_case, progress, &tyres.inflated(c.mesh));
-      // Shared only as a rolling study would solve it: nonlinear, at a target load, δz from the undeformed tyre.
-      if (!study_case.linear && !study_case.deflection && study_case.deflection_from == DeflectionOrigin::undeformed)
-        footprints.keep(c.mesh, study_case.support, study_case.target_load, study_case.load_tolerance, r);
-      write_csv(folder.path(r.name + "/load_points.csv"), load_curve_table(r));
-      if (!r.completed) {
-        report(progress, "warning: footprint " + incomplete_message(r));
-        incomplete.push_back(incomplete_message(r));
-      } else {
-        plots.attempt("footprint '" + r.name + "'", [&] { write_loaded_state(folder, plots, tm, c, r); });
-        report(progress,
-               fmt::format("footprint '{}': Qz {:.1f} N at δz {:.2f} mm{}, patch {:.1f} × {:.1f} mm, area {:.0f} "
-                           "mm², pmax {:.3f} MPa",
-                           r.name, r.points.back().patch.Qz_N, deflection_from_origin(r, r.final_state.deflection_mm),
-                           r.deflection_from == DeflectionOrigin::first_touch ? " from first touch" : "",
-                           r.points.back().patch.patch_length_mm, r.points.back().patch.patch_width_mm,
-                           r.points.back().patch.contact_area_mm2, r.points.back().patch.max_pressure_MPa));
-      }
-      toml::table t = footprint_summary(r);
-      t.insert("solver", counters_table(r.counters));
-      add_krylov(*t["solver"].as_table(), r.counters);
-      footprint_summaries.push_back(std::move(t));
-    });
+  for (std::size_t i = 0; i < c.footprints.size(); ++i, ++k) {
+    if (!runs[k].contact) continue;
+    const StaticContactResult& r = *runs[k].contact;
+    write_csv(folder.path(r.name + "/load_points.csv"), load_curve_table(r));
+    if (!r.completed) {
+      report(progress, "warning: footprint " + incomplete_message(r));
+      incomplete.push_back(incomplete_message(r));
+    } else {
+      plots.attempt("footprint '" + r.name + "'", [&] { write_loaded_state(folder, plots, tm, c, r); });
+      report(progress,
+             fmt::format("footprint '{}': Qz {:.1f} N at δz {:.2f} mm{}, patch {:.1f} × {:.1f} mm, area {:.0f} "
+                         "mm², pmax {:.3f} MPa",
+                         r.name, r.points.back().patch.Qz_N, deflection_from_origin(r, r.final_state.deflection_mm),
+                         r.deflection_from == DeflectionOrigin::first_touch ? " from first touch" : "",
+                         r.points.back().patch.patch_length_mm, r.points.back().patch.patch_width_mm,
+                         r.points.back().patch.contact_area_mm2, r.points.back().patch.max_pressure_MPa));
+    }
+    toml::table t = footprint_summary(r);
+    t.insert("solver", counters_table(r.counters));
+    add_krylov(*t["solver"].as_table(), r.counters);
+    footprint_summaries.push_back(std::move(t));
   }
   if (!c.footprints.empty()) summary.insert("footprints", std::move(footprint_summaries));
-  for (const RollingStudy& study_case : c.rolling) {
-    study("rolling '" + study_case.name + "'", [&] {
-      const MeshSettings& settings = study_case.mesh.value_or(c.mesh);
-      const TyreMesh& mesh = tyres.mesh(settings);
-      if (study_case.mesh)
-        report(progress, fmt::format("rolling '{}' on its own mesh: {} x {}, {} elements", study_case.name,
-                                     settings.circumferential_elements, settings.meridional_elements,
-                                     mesh.mesh.element_count()));
-      const RollingResult r = run_rolling(
-          mesh, c.tyre, c.inflation, c.contact, study_case, progress, &tyres.inflated(settings),
-          footprints.find(settings, study_case.support, study_case.target_load, study_case.load_tolerance));
-      footprints.keep(settings, study_case.support, study_case.target_load, study_case.load_tolerance, r.footprint);
-      if (!r.completed) {
-        const std::string m = fmt::format("rolling '{}': {}", r.name, r.failure);
-        report(progress, "warning: " + m + " (converged states kept)");
-        incomplete.push_back(m);
-      }
-      plots.attempt("rolling '" + r.name + "'", [&] { write_rolling(folder, plots, mesh, c, r); });
-      toml::table t = rolling_summary(r);
-      t.insert("footprint_solver", counters_table(r.footprint.counters));
-      t.insert("solver", counters_table(r.counters));
-      add_krylov(*t["solver"].as_table(), r.counters);
-      rolling_summaries.push_back(std::move(t));
-    });
+  for (std::size_t i = 0; i < c.rolling.size(); ++i, ++k) {
+    if (!runs[k].rolling) continue;
+    const RollingResult& r = *runs[k].rolling;
+    if (!r.completed) {
+      const std::string m = fmt::format("rolling '{}': {}", r.name, r.failure);
+      report(progress, "warning: " + m + " (converged states kept)");
+      incomplete.push_back(m);
+    }
+    const TyreMesh& mesh = tyres.mesh(c.rolling[i].mesh.value_or(c.mesh));
+    plots.attempt("rolling '" + r.name + "'", [&] { write_rolling(folder, plots, mesh, c, r); });
+    toml::table t = rolling_summary(r);
+    t.insert("footprint_solver", counters_table(r.footprint.counters));
+    t.insert("solver", counters_table(r.counters));
+    add_krylov(*t["solver"].as_table(), r.counters);
+    rolling_summaries.push_back(std::move(t));
   }
   if (!c.rolling.empty()) summary.insert("rolling", std::move(rolling_summaries));
+  times.end();
   const bool completed = incomplete.empty();
   summary.insert("completed", completed);
   if (!incomplete.empty()) summary.insert("incomplete", std::move(incomplete));
   toml::array skipped;
-  for (const std::string& m : plots.skipped()) skipped.push_back(m);
+  std::vector<std::string> skipped_reports = inflation_plots.skipped();
+  skipped_reports.insert(skipped_reports.end(), plots.skipped().begin(), plots.skipped().end());
+  for (const std::string& m : skipped_reports) skipped.push_back(m);
   if (!skipped.empty()) summary.insert("skipped_reports", std::move(skipped));
 
   times.begin("summary and results folder");
   const double before_writing = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   summary.insert("phases", times.table());
+  // The studies' phases overlap when they ran side by side: their wall time together, and how many ran at once.
+  summary.insert("studies_wall_time_s", studies_s);
+  summary.insert("studies_at_once_threads", plan.workers);
   summary.insert("wall_time_s", before_writing);
   write_json(folder.path("summary.json"), summary);
   // A run that stopped short leaves the last complete results as they were.
   const std::filesystem::path where = folder.commit(completed ? "" : "-incomplete");
   times.end();
   times.report(progress, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-  return {where, where / "summary.json", completed, plots.skipped()};
+  if (plan.workers > 1)
+    report(progress, fmt::format("  (the {} studies ran side by side, {} at once: {:.2f} s of wall time together)",
+                                 study_count, plan.workers, studies_s));
+  return {where, where / "summary.json", completed, skipped_reports};
 }
 
 }  // namespace tirefem

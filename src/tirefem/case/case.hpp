@@ -108,8 +108,9 @@ struct ContactSettings {
   // uses residual_tolerance.
   double provisional_tolerance = 1e-5;
   // Newton systems solved by GMRES preconditioned with an earlier factorisation while that converges
-  // fast (NewtonSettings::reuse_factorization); false: every Newton iteration factorises.
-  bool reuse_factorizations = false;
+  // fast (NewtonSettings::reuse_factorization, with Eisenstat–Walker tolerances); false: every Newton
+  // iteration factorises.
+  bool reuse_factorizations = true;
   // Which equilibrium each load point converges to (NewtonSettings::stable_equilibrium): nearest (exact
   // Newton steps from the prediction; the stability of each point is reported) or stable (every step
   // lowers the energy, so an unstable equilibrium is left for a stable one: a wrinkled or buckled state).

@@ -23,25 +23,31 @@ LocalFrame tangent_frame(const Eigen::Vector3d& normal, const Eigen::Vector3d& a
   return f;
 }
 
-// Adds the energy ½ εᵀ C ε w of one integration point, its gradient and its Hessian.
-void accumulate(const Strain3& strain, const Eigen::Matrix3d& stiffness, double weight,
-                bool with_tangent, ElementResponse& out) {
+// Adds the energy ½ εᵀ C ε w of one integration point, its gradient and its Hessian. The strains depend
+// on nodes [first, first + count) only (a face: its 4 nodes; the interlayer: all 8), so only that block
+// of the element's force and tangent is formed.
+template <int First, int Count>
+void accumulate(const Strain3& strain, const Eigen::Matrix3d& stiffness, double weight, bool with_tangent,
+                ElementResponse& out) {
+  constexpr int kDofs = 3 * Count;
   const Eigen::Vector3d eps(strain[0].value, strain[1].value, strain[2].value);
   const Eigen::Vector3d stress = stiffness * eps;
   out.energy += 0.5 * weight * eps.dot(stress);
-  Eigen::Matrix<double, 3, kElementDofs> b;
-  for (int c = 0; c < 3; ++c) b.row(c) = strain[c].gradient.transpose();
-  out.force.noalias() += weight * b.transpose() * stress;
+  Eigen::Matrix<double, 3, kDofs> b;
+  for (int c = 0; c < 3; ++c) b.row(c) = strain[c].gradient.template segment<kDofs>(3 * First).transpose();
+  out.force.template segment<kDofs>(3 * First).noalias() += weight * b.transpose() * stress;
   if (!with_tangent) return;
-  out.tangent.noalias() += weight * b.transpose() * stiffness * b;
-  Eigen::Matrix<double, kElementNodes, kElementNodes> geometric =
-      stress[0] * strain[0].hessian + stress[1] * strain[1].hessian + stress[2] * strain[2].hessian;
-  geometric *= weight;
-  for (int k = 0; k < kElementNodes; ++k)
-    for (int l = 0; l < kElementNodes; ++l) {
+  const Eigen::Matrix<double, 3, kDofs> cb = (weight * stiffness) * b;
+  out.tangent.template block<kDofs, kDofs>(3 * First, 3 * First).noalias() += b.transpose() * cb;
+  const Eigen::Matrix<double, Count, Count> geometric =
+      weight * (stress[0] * strain[0].hessian.template block<Count, Count>(First, First) +
+                stress[1] * strain[1].hessian.template block<Count, Count>(First, First) +
+                stress[2] * strain[2].hessian.template block<Count, Count>(First, First));
+  for (int k = 0; k < Count; ++k)
+    for (int l = 0; l < Count; ++l) {
       const double g = geometric(k, l);
       if (g == 0.0) continue;
-      for (int i = 0; i < 3; ++i) out.tangent(3 * k + i, 3 * l + i) += g;
+      for (int i = 0; i < 3; ++i) out.tangent(3 * (First + k) + i, 3 * (First + l) + i) += g;
     }
 }
 
@@ -186,11 +192,11 @@ ElementResponse three_layer_element(const NodeMatrix& reference, const NodeMatri
           .asDiagonal();
   for (const auto& gp : kGauss2x2) {
     const FacePoint inner = face_point(reference, current, 0, gp[0], gp[1], kinematics);
-    accumulate(inner.strain, section.inner_face, inner.area_scale, with_tangent, out);
+    accumulate<0, 4>(inner.strain, section.inner_face, inner.area_scale, with_tangent, out);
     const FacePoint outer = face_point(reference, current, 4, gp[0], gp[1], kinematics);
-    accumulate(outer.strain, section.outer_face, outer.area_scale, with_tangent, out);
+    accumulate<4, 4>(outer.strain, section.outer_face, outer.area_scale, with_tangent, out);
     const CorePoint core = core_point(reference, tying, gp[0], gp[1]);
-    accumulate(core.strain, core_stiffness, core.volume_scale, with_tangent, out);
+    accumulate<0, 8>(core.strain, core_stiffness, core.volume_scale, with_tangent, out);
   }
   return out;
 }

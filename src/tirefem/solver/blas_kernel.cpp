@@ -52,6 +52,18 @@ std::string best_kernel_for_this_cpu() {
   return "";
 }
 
+int blas_threads() {
+  using Getter = int (*)();
+  const auto get = reinterpret_cast<Getter>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+  return get ? get() : 0;
+}
+
+void set_blas_threads(int threads) {
+  using Setter = void (*)(int);
+  const auto set = reinterpret_cast<Setter>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+  if (set && threads > 0) set(threads);
+}
+
 void use_fast_blas_kernel(char** argv) {
   if (std::getenv("OPENBLAS_CORETYPE")) return;  // the user's (or an earlier pass's) choice
   const BlasKernel k = blas_kernel();

@@ -25,4 +25,9 @@ std::string best_kernel_for_this_cpu();
 // return then). Otherwise returns and changes nothing. Call first thing in main().
 void use_fast_blas_kernel(char** argv);
 
+// OpenBLAS's thread count (0 for another BLAS, whose threads are not ours to set).
+int blas_threads();
+// Sets OpenBLAS's thread count (nothing for another BLAS).
+void set_blas_threads(int threads);
+
 }  // namespace tirefem

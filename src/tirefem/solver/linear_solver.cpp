@@ -1,6 +1,7 @@
 #include "tirefem/solver/linear_solver.hpp"
 
 #include <chrono>
+#include <mutex>
 #include <stdexcept>
 
 #include <Eigen/CholmodSupport>
@@ -11,6 +12,15 @@ namespace tirefem {
 namespace {
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// METIS (behind CHOLMOD's and UMFPACK's nested-dissection orderings) keeps its random generator in
+// globals: two analyses at the same time (studies run side by side) would race on it and get orderings
+// that differ from run to run, and so different round-off. Analyses therefore run one at a time; they
+// are done once per solver, so nothing waits long.
+std::mutex& ordering_mutex() {
+  static std::mutex m;
+  return m;
 }
 }  // namespace
 
@@ -49,7 +59,10 @@ void SparseDirectSolver::analyse_cholesky(const SparseMatrix& matrix) {
   common.method[1].ordering = CHOLMOD_METIS;
   common.method[2].ordering = CHOLMOD_NESDIS;
   common.postorder = 1;
-  s.cholesky.analyzePattern(matrix);
+  {
+    const std::lock_guard lock(ordering_mutex());
+    s.cholesky.analyzePattern(matrix);
+  }
   s.cholesky_analysed = true;
   stats_.factor_flops = common.fl;
   stats_.factor_nonzeros = common.lnz;
@@ -87,7 +100,10 @@ void SparseDirectSolver::factorize_lu(const SparseMatrix& matrix) {
     // model takes 3.25 instead of 3.77 GFlop per LU (UMFPACK's own count, −14%).
     s.lu.umfpackControl()(UMFPACK_ORDERING) = UMFPACK_ORDERING_METIS;
     const auto t0 = std::chrono::steady_clock::now();
-    s.lu.analyzePattern(matrix);
+    {
+      const std::lock_guard lock(ordering_mutex());
+      s.lu.analyzePattern(matrix);
+    }
     s.lu_analysed = true;
     stats_.analysis_s += seconds_since(t0);
   }
@@ -142,6 +158,7 @@ bool SparseDirectSolver::factorize_cholesky(const SparseMatrix& matrix, double r
   ++stats_.factorizations;
   if (s.cholesky.info() != Eigen::Success) {
     ++stats_.failed_cholesky;
+    s.factorized = s.lu_active;  // only an earlier LU is left to solve with
     return false;
   }
   if (relative_shift > 0) ++stats_.shifted_factorizations;
@@ -150,11 +167,11 @@ bool SparseDirectSolver::factorize_cholesky(const SparseMatrix& matrix, double r
   return true;
 }
 
-double SparseDirectSolver::factorize_inertia_corrected(const SparseMatrix& matrix) {
+double SparseDirectSolver::factorize_inertia_corrected(const SparseMatrix& matrix, bool from_zero) {
   auto& s = *impl_;
   constexpr double kFirstShift = 1e-6, kGrowth = 10.0, kLargestShift = 1e4;
   // Start one decade below the last shift that worked (or at 0): the tangent along a path changes slowly.
-  double shift = s.last_relative_shift > 10 * kFirstShift ? s.last_relative_shift / kGrowth : 0.0;
+  double shift = !from_zero && s.last_relative_shift > 10 * kFirstShift ? s.last_relative_shift / kGrowth : 0.0;
   while (!factorize_cholesky(matrix, shift)) {
     shift = shift == 0.0 ? kFirstShift : kGrowth * shift;
     if (shift > kLargestShift) throw std::runtime_error("no shift makes the tangent positive definite");

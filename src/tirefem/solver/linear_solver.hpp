@@ -48,8 +48,8 @@ class SparseDirectSolver {
   // 0, 1e-6, 1e-5, … that makes it positive definite (starting near the last σ that worked, since
   // consecutive tangents are alike). Returns σ: 0 when A itself is positive definite; σ > 0 marks an
   // indefinite A, and solve() then gives a step that descends the energy (MODEL.md §8). Throws when even
-  // σ = 1e4 fails.
-  double factorize_inertia_corrected(const SparseMatrix& matrix);
+  // σ = 1e4 fails. `from_zero`: try σ = 0 first whatever the last σ was (to tell whether A is stable).
+  double factorize_inertia_corrected(const SparseMatrix& matrix, bool from_zero = false);
   // One Cholesky attempt of A + σ·diag|A| (σ = relative_shift ≥ 0): false when that is not positive
   // definite (then there is no usable factorisation).
   bool factorize_cholesky(const SparseMatrix& matrix, double relative_shift = 0.0);

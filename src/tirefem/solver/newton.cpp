@@ -41,6 +41,7 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
   double first_residual = -1.0;
   double energy = 0.0, first_energy = 0.0;  // |Δu·R| of the last and of the first iteration
   double previous_residual = 0.0;
+  double previous_eta = settings_.max_forcing_term;
   // The last step, kept until the residual at its end is known: a step that made the residual grow (or
   // came from a shifted tangent) is checked against the energy and cut back if it does not lower it.
   Eigen::VectorXd base, step;
@@ -128,12 +129,16 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
         lu_mode_ = !linear_.factorize_cholesky(problem_.system().tangent(), 0.0);
         if (!lu_mode_) shift_ = 0.0;
       }
+      // Steps by GMRES on an earlier factorisation say nothing of this state's tangent: one Cholesky
+      // attempt on it tells whether the state is stable, and preconditions the next solve.
+      else if (settings_.reuse_factorization && inertia_corrected_ && !settings_.stable_equilibrium && it > 0)
+        test_stability_nearest();
       // A stable equilibrium is sought: test the converged state's own tangent; at a saddle (the
       // prediction kept the symmetry of the state, so the exact steps never felt the unstable mode)
       // push off along the direction of negative curvature, to the side that lowers the energy, and
       // go on descending.
       if (settings_.stable_equilibrium && potential && inertia_corrected_) {
-        shift_ = linear_.factorize_inertia_corrected(problem_.system().tangent());
+        shift_ = linear_.factorize_inertia_corrected(problem_.system().tangent(), true);
         if (shift_ > 0 && out.escapes < kMaxEscapes && push_off_saddle(u, load_factor)) {
           ++out.escapes;
           out.escaped_shift = std::max(out.escaped_shift, shift_);
@@ -158,8 +163,23 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
     // A step from a reused factorisation that made the residual grow was too inexact for this
     // nonlinearity (e.g. the preconditioner came from a very different state): factorise afresh.
     const bool fresh = it > 0 && rn > previous_residual;
+    double eta = settings_.krylov_tolerance;
+    if (settings_.adaptive_krylov_tolerance) {
+      // Eisenstat–Walker forcing term (their choice 2, γ = 0.9, α = 2, with its safeguard): loose while
+      // the residual falls slowly, tight once Newton converges fast; between krylov_tolerance and
+      // max_forcing_term, and no tighter than what brings the residual to a tenth of the Newton tolerance.
+      const double eta_max = settings_.max_forcing_term;
+      eta = eta_max;
+      if (previous_residual > 0 && !restart) {
+        const double safeguard = 0.9 * previous_eta * previous_eta;
+        eta = std::max(0.9 * std::pow(rn / previous_residual, 2.0), safeguard > 0.1 ? safeguard : 0.0);
+      }
+      eta = std::clamp(eta, settings_.krylov_tolerance, eta_max);
+      eta = std::max(eta, std::min(eta_max, 0.1 * settings_.residual_tolerance * reference / rn));
+      previous_eta = eta;
+    }
     previous_residual = rn;
-    if (!solve_linear(-r, du, fresh)) return out;
+    if (!solve_linear(-r, du, fresh, eta)) return out;
     out.final_shift = shift_;
     // Line search on ‖R‖ (problems without a potential, when enabled): far from the solution (an
     // unstressed membrane under follower pressure) a full step can overshoot by orders of magnitude.
@@ -251,6 +271,17 @@ bool NewtonSolver::push_off_saddle(Eigen::VectorXd& u, double load_factor) {
   return best < 0.0;
 }
 
+void NewtonSolver::test_stability_nearest() {
+  const SparseMatrix& tangent = problem_.system().tangent();
+  if (linear_.factorize_cholesky(tangent, 0.0)) {
+    shift_ = 0.0;
+    return;
+  }
+  // Singular up to round-off (the shift that makes it positive definite is this small) or indefinite.
+  shift_ = linear_.factorize_cholesky(tangent, kRoundOffShift) ? kRoundOffShift : 10 * kRoundOffShift;
+  if (shift_ > kRoundOffShift) lu_mode_ = true;
+}
+
 bool NewtonSolver::solve_inertia_corrected(const Eigen::VectorXd& rhs, Eigen::VectorXd& du) {
   const SparseMatrix& tangent = problem_.system().tangent();
   const auto lu_step = [&] {
@@ -296,7 +327,8 @@ bool NewtonSolver::solve_inertia_corrected(const Eigen::VectorXd& rhs, Eigen::Ve
   return true;
 }
 
-bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du, bool fresh) {
+bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du, bool fresh,
+                                double krylov_tolerance) {
   const SparseMatrix& tangent = problem_.system().tangent();
   const auto direct = [&] {
     if (inertia_corrected_) return solve_inertia_corrected(rhs, du);
@@ -313,8 +345,7 @@ bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du,
     }
     // Reuse the last factorisation as a preconditioner; refactorise when that no longer converges fast.
     const int before = linear_.stats().krylov_iterations;
-    if (linear_.solve_preconditioned(tangent, rhs, du, settings_.krylov_tolerance,
-                                     settings_.max_krylov_iterations)) {
+    if (linear_.solve_preconditioned(tangent, rhs, du, krylov_tolerance, settings_.max_krylov_iterations)) {
       refresh_ = lu && linear_.stats().krylov_iterations - before > settings_.refresh_after_krylov_iterations;
       // When a stable equilibrium is sought the step must descend (rhs = −R): an exact step towards a
       // saddle is replaced by the inertia-corrected one.

@@ -81,11 +81,25 @@ class SparseSystem {
   const DofMap& dofs() const { return dofs_; }
 
  private:
-  void add_slot(const BlockBatch::Slot& slot, int first_column, int end_column, int first_dof, int end_dof);
+  // Where each entry of a slot's block goes in the tangent's value array (−1: a constrained row or
+  // column), with the DOFs it was found for.
+  struct SlotPositions {
+    int n = 0;
+    std::array<int, BlockBatch::kMaxDofs> dofs;
+    std::vector<int> positions;
+  };
+  void find_positions(const BlockBatch::Slot& slot, SlotPositions& p) const;
+  void add_slot(const BlockBatch::Slot& slot, const int* positions, int first_column, int end_column,
+                int first_dof, int end_dof);
   const DofMap& dofs_;
   Eigen::VectorXd residual_;
   SparseMatrix tangent_;
   BlockBatch batch_;
+  // The forms add their batches in the same order at every assembly, and an element's DOFs do not
+  // change: so the positions of the k-th batch's slots are found once (by binary search in the pattern)
+  // and reused, checked against the slot's DOFs each time.
+  std::vector<std::vector<SlotPositions>> positions_;
+  int batches_added_ = 0;  // since the last clear()
 };
 
 }  // namespace tirefem

@@ -1,0 +1,58 @@
+#include "tirefem/analysis/shared_states.hpp"
+
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace tirefem {
+
+InflatedTyres::Entry& InflatedTyres::entry(const MeshSettings& m) {
+  return entries_[{m.circumferential_elements, m.meridional_elements, m.half_model, m.circumferential_refinement,
+                    static_cast<int>(m.meridional_grading)}];
+}
+
+const TyreMesh& InflatedTyres::mesh(const MeshSettings& m) {
+  const std::lock_guard lock(mutex_);
+  Entry& e = entry(m);
+  if (!e.mesh) e.mesh = std::make_unique<TyreMesh>(build_tyre_mesh(case_.tyre, m));
+  return *e.mesh;
+}
+
+const InflationResult& InflatedTyres::inflated(const MeshSettings& m) {
+  const std::lock_guard lock(mutex_);
+  Entry& e = entry(m);
+  if (!e.inflated) {
+    e.inflated = inflate_for_contact(mesh(m), case_.inflation, progress_);
+    if (solved_) solved_(m, e.inflated->counters.wall_s);
+  }
+  if (!e.inflated->converged) throw std::runtime_error(e.inflated->failure);
+  return *e.inflated;
+}
+
+void InflatedTyres::adopt(const MeshSettings& m, const InflationResult& r) {
+  const std::lock_guard lock(mutex_);
+  entry(m).inflated = r;
+}
+
+std::string SharedFootprints::key(const MeshSettings& m, const SupportDescription& s, double load,
+                                  double tolerance) {
+  std::string k = fmt::format("{} {} {} {:a} {} | {} {:a} | {:a} {:a}", m.circumferential_elements,
+                              m.meridional_elements, m.half_model, m.circumferential_refinement,
+                              static_cast<int>(m.meridional_grading), static_cast<int>(s.kind), s.drum_diameter,
+                              load, tolerance);
+  for (const auto& t : s.terms) k += fmt::format(" {:a} {} {}", t.coefficient, t.x_power, t.y_power);
+  return k;
+}
+
+const StaticContactResult* SharedFootprints::find(const std::string& key) const {
+  const std::lock_guard lock(mutex_);
+  const auto it = entries_.find(key);
+  return it == entries_.end() ? nullptr : &it->second;
+}
+
+void SharedFootprints::keep(const std::string& key, const StaticContactResult& r) {
+  const std::lock_guard lock(mutex_);
+  if (r.completed) entries_.try_emplace(key, r);
+}
+
+}  // namespace tirefem

@@ -1,0 +1,97 @@
+#include "tirefem/analysis/study_reports.hpp"
+
+#include <fmt/format.h>
+
+#include "tirefem/analysis/run_case.hpp"
+#include "tirefem/io/csv_writer.hpp"
+#include "tirefem/io/vtu_writer.hpp"
+#include "tirefem/results/footprint_report.hpp"
+#include "tirefem/results/inflation_report.hpp"
+#include "tirefem/results/rolling_report.hpp"
+#include "tirefem/results/shell_results.hpp"
+
+namespace tirefem {
+
+void ReportWriter::plot(const std::string& stem, const Plot& p) {
+  if (p.series.empty()) return skip(stem, "nothing to plot");
+  note(write_plot(folder_.path("plots/" + stem), p));
+}
+
+void ReportWriter::heatmap(const std::string& stem, const HeatMap& m) {
+  note(write_heatmap(folder_.path("plots/" + stem), m));
+}
+
+bool ReportWriter::is_interrupt(const std::exception& e) { return dynamic_cast<const RunInterrupted*>(&e) != nullptr; }
+
+void ReportWriter::skip(const std::string& name, const std::string& why) {
+  skipped_.push_back(fmt::format("{}: {}", name, why));
+  if (progress_) progress_(fmt::format("note: report '{}' skipped: {}", name, why));
+}
+
+void ReportWriter::note(bool rendered) {
+  if (!rendered && !warned_ && progress_) progress_("warning: gnuplot not found, plots written as scripts only");
+  warned_ = warned_ || !rendered;
+}
+
+// Everything about one loaded state: VTU of the shell and the support, the tread points, the pressure
+// maps, the cord strains under the patch centre (Fig. 5) and the belt tension round the equator (Fig. 8).
+void write_loaded_state(const ResultsFolder& folder, ReportWriter& plots, const TyreMesh& tm, const Case& c,
+                        const StaticContactResult& r) {
+  const std::string& n = r.name;
+  const auto loaded = evaluate_element_results(tm, c.tyre, r.final_state.displacement, r.kinematics);
+  const auto inflated =
+      evaluate_element_results(tm, c.tyre, r.inflation.displacement, r.inflation.kinematics);
+  write_vtu(folder.path(n + "/shell.vtu"), loaded_shell_vtu(tm, c.tyre, r, loaded));
+  write_vtu(folder.path(n + "/support.vtu"), support_vtu(r));
+  write_csv(folder.path(n + "/tread_points.csv"), tread_points_table(r));
+  plots.heatmap(n + "_pressure_s_phi", pressure_map_s_phi(r));
+  plots.heatmap(n + "_footprint", footprint_map_xy(r));
+  const CsvTable meridian_loaded = meridian_table(tm, c.tyre, r.final_state.displacement, loaded);
+  const CsvTable meridian_inflated = meridian_table(tm, c.tyre, r.inflation.displacement, inflated);
+  write_csv(folder.path(n + "/meridian_under_patch.csv"), meridian_loaded);
+  plots.plot(n + "_cord_strain", meridian_cord_strain_plot({{"inflated", &meridian_inflated},
+                                                            {"loaded", &meridian_loaded}}));
+  const CsvTable belt = circumferential_belt_table(tm, c.tyre, {{"inflated", &inflated}, {"loaded", &loaded}});
+  write_csv(folder.path(n + "/belt_tension_equator.csv"), belt);
+  plots.plot(n + "_belt_tension", circumferential_belt_plot(belt));
+}
+
+// A rolling study: the states and the sweep as tables, per state the tread points (CSV and point cloud),
+// the loaded shell and the traction map (Fig. 7), and the belt tension of all states together with the
+// inflated and the static one (Fig. 8).
+void write_rolling(const ResultsFolder& folder, ReportWriter& plots, const TyreMesh& tm, const Case& c,
+                   const RollingResult& r) {
+  const std::string& n = r.name;
+  write_csv(folder.path(n + "/states.csv"), rolling_states_table(r));
+  write_csv(folder.path(n + "/footprint_load_points.csv"), load_curve_table(r.footprint));
+  if (!r.sweep.empty()) {
+    write_csv(folder.path(n + "/slip_sweep.csv"), slip_sweep_table(r));
+    plots.plot(n + "_slip_curve", slip_sweep_plot(r));
+  }
+  if (!r.footprint.completed) return;
+  const auto inflated = evaluate_element_results(tm, c.tyre, r.footprint.inflation.displacement, Kinematics::nonlinear);
+  const auto loaded = evaluate_element_results(tm, c.tyre, r.footprint.final_state.displacement, Kinematics::nonlinear);
+  std::vector<std::vector<ElementResult>> rolling;
+  std::vector<std::string> labels;
+  for (const RollingStateResult& s : r.states) {
+    if (!s.converged) continue;
+    const std::string dir = n + "/" + s.name + "/";
+    write_csv(folder.path(dir + "tread_points.csv"), rolling_tread_table(r, s));
+    write_vtu(folder.path(dir + "tread_points.vtu"), tread_points_vtu(r, s));
+    StaticContactResult as_static = r.footprint;  // the loaded shell with this state's displacement
+    as_static.final_state.displacement = s.displacement;
+    as_static.final_state.tread = s.normal;
+    rolling.push_back(evaluate_element_results(tm, c.tyre, s.displacement, Kinematics::nonlinear));
+    labels.push_back(s.name);
+    write_vtu(folder.path(dir + "shell.vtu"), loaded_shell_vtu(tm, c.tyre, as_static, rolling.back()));
+    plots.heatmap(n + "_" + s.name + "_traction", traction_map_s_phi(r, s));
+  }
+  std::vector<std::pair<std::string, const std::vector<ElementResult>*>> belt{{"inflated", &inflated},
+                                                                              {"static", &loaded}};
+  for (std::size_t i = 0; i < rolling.size(); ++i) belt.emplace_back(labels[i], &rolling[i]);
+  const CsvTable table = circumferential_belt_table(tm, c.tyre, belt);
+  write_csv(folder.path(n + "/belt_tension_equator.csv"), table);
+  plots.plot(n + "_belt_tension", circumferential_belt_plot(table));
+}
+
+}  // namespace tirefem

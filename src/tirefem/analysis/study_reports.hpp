@@ -1,0 +1,57 @@
+#pragma once
+// The files of one study in the results folder: tables, VTU files and plots of a loaded state and of a
+// rolling study, each report guarded so that one that cannot be drawn is skipped with a note.
+#include <string>
+#include <vector>
+
+#include "tirefem/analysis/footprint.hpp"
+#include "tirefem/analysis/rolling.hpp"
+#include "tirefem/io/plot_writer.hpp"
+#include "tirefem/io/results_folder.hpp"
+
+namespace tirefem {
+
+class RunInterrupted;
+
+// Writes the plots (gnuplot may be missing: warn once) and guards every report: a report that cannot be
+// made (e.g. no ply, hence no cord tension to plot) is skipped with a note, never a failure that would
+// discard the solve.
+class ReportWriter {
+ public:
+  ReportWriter(const ResultsFolder& folder, const ProgressSink& progress) : folder_(folder), progress_(progress) {}
+  void plot(const std::string& stem, const Plot& p);
+  void heatmap(const std::string& stem, const HeatMap& m);
+  // Runs `write`; an exception (other than an interrupt) skips the rest of that report with a note.
+  template <class F>
+  void attempt(const std::string& report_name, F&& write) {
+    try {
+      write();
+    } catch (const std::exception& e) {
+      if (is_interrupt(e)) throw;
+      skip(report_name, e.what());
+    }
+  }
+  const std::vector<std::string>& skipped() const { return skipped_; }
+
+ private:
+  static bool is_interrupt(const std::exception& e);
+  void skip(const std::string& name, const std::string& why);
+  void note(bool rendered);
+  const ResultsFolder& folder_;
+  ProgressSink progress_;
+  bool warned_ = false;
+  std::vector<std::string> skipped_;
+};
+
+// Everything about one loaded state: VTU of the shell and the support, the tread points, the pressure
+// maps, the cord strains under the patch centre (Fig. 5) and the belt tension round the equator (Fig. 8).
+void write_loaded_state(const ResultsFolder& folder, ReportWriter& plots, const TyreMesh& tm, const Case& c,
+                        const StaticContactResult& r);
+
+// A rolling study: the states and the sweep as tables, per state the tread points (CSV and point cloud),
+// the loaded shell and the traction map (Fig. 7), and the belt tension of all states together with the
+// inflated and the static one (Fig. 8).
+void write_rolling(const ResultsFolder& folder, ReportWriter& plots, const TyreMesh& tm, const Case& c,
+                   const RollingResult& r);
+
+}  // namespace tirefem
