@@ -60,6 +60,10 @@ class DeflectionPath {
   // halving (at most `max_cutbacks` times) when a solve fails. On success the state is recorded.
   Step advance_to(double deflection, int max_cutbacks = 6);
 
+  // A converged state found elsewhere (a load curve's), for the predictor only: the current state stays.
+  void add_known_state(double deflection, Eigen::VectorXd u) {
+    states_.insert(states_.end() - 1, {deflection, std::move(u)});
+  }
   const Eigen::VectorXd& displacement() const { return states_.back().u; }
   double deflection() const { return states_.back().deflection; }
 

@@ -170,6 +170,9 @@ class StaticContactRun {
     ns.residual_tolerance = settings.residual_tolerance;
     ns.reuse_factorization = settings.reuse_factorizations;
     ns.adaptive_krylov_tolerance = true;
+    // The linearised tyre's tangent is the inflated state's (positive definite: its factorisations in
+    // the inflation needed no shift, and the first one here would show a shift) plus the contact springs.
+    ns.known_stable = kinematics == Kinematics::linear;
     ns.stable_equilibrium = settings.equilibrium == ContactSettings::Equilibrium::stable;
     newton_ = std::make_unique<NewtonSolver>(*problem_, ns);
     for (const TreadPointState& p : contact_->evaluate(result_.inflation.displacement))
@@ -193,6 +196,14 @@ class StaticContactRun {
 
   // δz (from the undeformed tyre) of the first load point: 0, or the first touch.
   double start() const { return start_; }
+  // States of another study of this problem (a load curve's) for the predictor.
+  void add_known_states(const std::vector<PathState>& states) {
+    for (const PathState& p : states) path_->add_known_state(p.deflection_mm, p.displacement);
+  }
+  // The current converged state, to keep as a PathState.
+  PathState current_state() const {
+    return {path_->deflection(), result_.points.back().patch.Qz_N, path_->displacement()};
+  }
   const std::vector<Eigen::Vector3d>& inflated_tread() const { return inflated_tread_; }
   const SupportSurface& support() const { return *support_; }
 
@@ -292,7 +303,7 @@ const char* origin_label(DeflectionOrigin origin) {
 StaticContactResult run_load_curve(const TyreMesh& tm, const TyreDescription& tyre,
                                    const InflationSettings& inflation, const ContactSettings& contact,
                                    const LoadCurveStudy& study, const ProgressSink& progress,
-                                   const InflationResult* inflated) {
+                                   const InflationResult* inflated, bool keep_path) {
   const auto t0 = Clock::now();
   StaticContactResult result = empty_result(tm, contact, study);
   if (progress)
@@ -302,8 +313,11 @@ StaticContactResult run_load_curve(const TyreMesh& tm, const TyreDescription& ty
   StaticContactRun run(tm, tyre, inflation, contact, study.support, result.kinematics, study.deflection_from, result,
                        progress, inflated);
   bool ok = true;
-  for (int k = 1; k <= study.points && ok; ++k)
+  if (keep_path) result.path.push_back(run.current_state());
+  for (int k = 1; k <= study.points && ok; ++k) {
     ok = run.solve_at(run.start() + study.max_deflection * k / study.points);
+    if (ok && keep_path) result.path.push_back(run.current_state());
+  }
   run.finish();
   result.completed = ok;
   result.counters.wall_s = seconds_since(t0);
@@ -326,7 +340,8 @@ bool solve_at_given_deflection(StaticContactRun& run, double deflection, double 
 // of regula falsi inside the bracket. Every state tried is a converged load point. The first step goes to
 // a membrane estimate of the deflection (first_touch.hpp), within [0.5, max_step] mm of the first point.
 bool search_target_load(StaticContactRun& run, StaticContactResult& result, const FootprintStudy& study,
-                        double pressure, double section_height, double max_step, const ProgressSink& progress) {
+                        double pressure, double section_height, double max_step, const ProgressSink& progress,
+                        const StaticContactResult* along) {
   const double target = study.target_load, tolerance = study.load_tolerance * study.target_load;
   const double q0 = run.last_Qz();
   if (std::abs(q0 - target) <= tolerance) return true;
@@ -335,7 +350,25 @@ bool search_target_load(StaticContactRun& run, StaticContactResult& result, cons
   bool bracketed = false;
   int lo_side_repeats = 0, hi_side_repeats = 0;
   double next = 0.0;
-  if (q0 > target) {
+  // The states of a load curve of the same problem: the bracket of the target from their Qz, the
+  // prediction from them; the first point solved is then next to the target.
+  const PathState* below = nullptr;
+  const PathState* above = nullptr;
+  if (along && q0 < target) {
+    run.add_known_states(along->path);
+    for (const PathState& p : along->path) {
+      if (p.Qz_N < target && (!below || p.deflection_mm > below->deflection_mm)) below = &p;
+      if (p.Qz_N >= target && (!above || p.deflection_mm < above->deflection_mm)) above = &p;
+    }
+  }
+  if (below && above && above->deflection_mm > below->deflection_mm) {
+    lo = below->deflection_mm, q_lo = below->Qz_N, hi = above->deflection_mm, q_hi = above->Qz_N, bracketed = true;
+    next = lo + (target - q_lo) * (hi - lo) / (q_hi - q_lo);
+    if (progress)
+      progress(fmt::format("  from load curve '{}': Qz {:.1f} N at δz {:.2f} mm, {:.1f} N at {:.2f} mm; first "
+                           "step to δz = {:.2f} mm",
+                           along->name, q_lo, lo, q_hi, hi, next));
+  } else if (q0 > target) {
     // Passed already at δz = 0 (from the undeformed tyre): between the first touch (Qz = 0) and here.
     lo = result.first_touch_deflection_mm, q_lo = 0.0, hi = run.start(), q_hi = q0, bracketed = true;
     next = lo + (target - q_lo) * (hi - lo) / (q_hi - q_lo);
@@ -399,7 +432,7 @@ bool search_target_load(StaticContactRun& run, StaticContactResult& result, cons
 StaticContactResult run_footprint(const TyreMesh& tm, const TyreDescription& tyre,
                                   const InflationSettings& inflation, const ContactSettings& contact,
                                   const FootprintStudy& study, const ProgressSink& progress,
-                                  const InflationResult* inflated) {
+                                  const InflationResult* inflated, const StaticContactResult* along) {
   const auto t0 = Clock::now();
   StaticContactResult result = empty_result(tm, contact, study);
   if (study.deflection)
@@ -423,7 +456,7 @@ StaticContactResult run_footprint(const TyreMesh& tm, const TyreDescription& tyr
     // From the undeformed tyre the first point is at 0, from the first touch at the first touch.
     ok = solve_at_given_deflection(run, run.start() + *study.deflection, kMaxStep);
   } else {
-    ok = search_target_load(run, result, study, inflation.pressure, section_height, kMaxStep, progress);
+    ok = search_target_load(run, result, study, inflation.pressure, section_height, kMaxStep, progress, along);
   }
   run.finish();
   result.completed = ok;

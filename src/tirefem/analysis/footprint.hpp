@@ -55,6 +55,13 @@ struct ContactState {
   std::vector<TreadPointState> tread;
 };
 
+// A converged state of a load curve, kept for a footprint study on the same support to start from.
+struct PathState {
+  double deflection_mm = 0.0;
+  double Qz_N = 0.0;
+  Eigen::VectorXd displacement;
+};
+
 struct StaticContactResult {
   std::string name;
   SupportDescription support;
@@ -76,6 +83,8 @@ struct StaticContactResult {
   // The origin of the deflections the study was given and reports. LoadPoint::deflection_mm and
   // ContactState::deflection_mm are always from the undeformed tyre; deflection_from_origin converts.
   DeflectionOrigin deflection_from = DeflectionOrigin::undeformed;
+  // Every converged state of a load curve, when asked for (run_load_curve's keep_path).
+  std::vector<PathState> path;
 };
 
 // A deflection from the undeformed tyre, measured from the result's origin.
@@ -89,13 +98,17 @@ inline double deflection_from_origin(const StaticContactResult& r, double deflec
 StaticContactResult run_load_curve(const TyreMesh& tyre_mesh, const TyreDescription& tyre,
                                    const InflationSettings& inflation, const ContactSettings& contact,
                                    const LoadCurveStudy& study, const ProgressSink& progress = {},
-                                   const InflationResult* inflated = nullptr);
+                                   const InflationResult* inflated = nullptr, bool keep_path = false);
 // Finds δz with Qz = target (points: the deflections tried on the way, all converged), or solves at the
-// study's given deflection, from `inflated` as above.
+// study's given deflection, from `inflated` as above. `along`: a load curve of this mesh on the same
+// support, in the same theory and from the same origin, with its path kept: the search starts from its
+// states (the bracket of the target from their Qz, the prediction from the nearest two), instead of
+// stepping there from the unloaded tyre.
 StaticContactResult run_footprint(const TyreMesh& tyre_mesh, const TyreDescription& tyre,
                                   const InflationSettings& inflation, const ContactSettings& contact,
                                   const FootprintStudy& study, const ProgressSink& progress = {},
-                                  const InflationResult* inflated = nullptr);
+                                  const InflationResult* inflated = nullptr,
+                                  const StaticContactResult* along = nullptr);
 
 // The nonlinear inflated state the contact studies start from (both theories: the linear one is
 // linearised about it).

@@ -240,22 +240,43 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
       run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
   };
+  // A footprint at a target load starts from the states of a load curve of the same problem (support,
+  // theory, origin of δz), so it runs after that curve, in its chain.
+  const auto problem_key = [&](const SupportDescription& support, bool linear, DeflectionOrigin origin) {
+    return SharedFootprints::key(c.mesh, support, 0.0, 0.0) + (linear ? " linear " : " nonlinear ") +
+           (origin == DeflectionOrigin::first_touch ? "first_touch" : "undeformed");
+  };
+  std::map<std::string, std::pair<std::size_t, int>> curve_of_problem;  // its chain and its study index
+  std::vector<char> keep_path(c.load_curves.size(), 0);
   int k = 0;
   for (const LoadCurveStudy& s : c.load_curves) {
     chains.push_back({task(k, "load curve '" + s.name + "'", [&, k](const ProgressSink& sink) {
-      runs[k].contact = run_load_curve(tm, c.tyre, c.inflation, c.contact, s, sink, &tyres.inflated(c.mesh));
+      runs[k].contact = run_load_curve(tm, c.tyre, c.inflation, c.contact, s, sink, &tyres.inflated(c.mesh),
+                                       keep_path[k] != 0);
     })});
+    curve_of_problem.try_emplace(problem_key(s.support, s.linear, s.deflection_from), chains.size() - 1, k);
     ++k;
   }
   for (const FootprintStudy& s : c.footprints) {
     // Shared only as a rolling study would solve it: nonlinear, at a target load, δz from the undeformed tyre.
     const bool shared = !s.linear && !s.deflection && s.deflection_from == DeflectionOrigin::undeformed;
     const std::string key = SharedFootprints::key(c.mesh, s.support, s.target_load, s.load_tolerance);
-    chains.push_back({task(k, "footprint '" + s.name + "'", [&, k, shared, key](const ProgressSink& sink) {
-      runs[k].contact = run_footprint(tm, c.tyre, c.inflation, c.contact, s, sink, &tyres.inflated(c.mesh));
+    const auto curve = s.deflection ? curve_of_problem.end()
+                                    : curve_of_problem.find(problem_key(s.support, s.linear, s.deflection_from));
+    const int along = curve == curve_of_problem.end() ? -1 : curve->second.second;
+    auto solve = task(k, "footprint '" + s.name + "'", [&, k, shared, key, along](const ProgressSink& sink) {
+      const StaticContactResult* path = along >= 0 && runs[along].contact ? &*runs[along].contact : nullptr;
+      runs[k].contact = run_footprint(tm, c.tyre, c.inflation, c.contact, s, sink, &tyres.inflated(c.mesh), path);
       if (shared) footprints.keep(key, *runs[k].contact);
-    })});
-    if (shared) chain_of_footprint.try_emplace(key, chains.size() - 1);
+    });
+    if (along >= 0) {
+      keep_path[along] = 1;
+      chains[curve->second.first].push_back(std::move(solve));
+      if (shared) chain_of_footprint.try_emplace(key, curve->second.first);
+    } else {
+      chains.push_back({std::move(solve)});
+      if (shared) chain_of_footprint.try_emplace(key, chains.size() - 1);
+    }
     ++k;
   }
   for (const RollingStudy& s : c.rolling) {
@@ -312,8 +333,9 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     t.insert("solver", counters_table(r.counters));
     add_krylov(*t["solver"].as_table(), r.counters);
     curve_summaries.push_back(std::move(t));
-    r.final_state.displacement.resize(0);  // keep the curve, not its last state
+    r.final_state.displacement.resize(0);  // keep the curve, not its states
     r.inflation.displacement.resize(0);
+    r.path.clear();
     curves.push_back(&r);
   }
   if (!curves.empty()) {

@@ -131,13 +131,14 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
       }
       // Steps by GMRES on an earlier factorisation say nothing of this state's tangent: one Cholesky
       // attempt on it tells whether the state is stable, and preconditions the next solve.
-      else if (settings_.reuse_factorization && inertia_corrected_ && !settings_.stable_equilibrium && it > 0)
+      else if (settings_.reuse_factorization && inertia_corrected_ && !settings_.stable_equilibrium && it > 0 &&
+               !settings_.known_stable)
         test_stability_nearest();
       // A stable equilibrium is sought: test the converged state's own tangent; at a saddle (the
       // prediction kept the symmetry of the state, so the exact steps never felt the unstable mode)
       // push off along the direction of negative curvature, to the side that lowers the energy, and
       // go on descending.
-      if (settings_.stable_equilibrium && potential && inertia_corrected_) {
+      if (settings_.stable_equilibrium && potential && inertia_corrected_ && !settings_.known_stable) {
         shift_ = linear_.factorize_inertia_corrected(problem_.system().tangent(), true);
         if (shift_ > 0 && out.escapes < kMaxEscapes && push_off_saddle(u, load_factor)) {
           ++out.escapes;

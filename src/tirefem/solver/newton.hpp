@@ -51,6 +51,9 @@ struct NewtonSettings {
   //    Newton then cannot settle on a saddle: it leaves an unstable equilibrium for a stable one (a
   //    wrinkled or snapped-through state), the way a quasi-static structure does.
   bool stable_equilibrium = false;
+  // The problem's tangent is positive definite at every state (a linearised tyre, stable when inflated,
+  // with contact springs): the converged states need no stability test.
+  bool known_stable = false;
   int max_energy_backtracks = 12;
   double armijo = 1e-4;
 };
