@@ -143,5 +143,48 @@ TEST(ContactLoadCurve, SharedInflatedStateEqualsOwnInflation) {
   // (Iteration counts may differ by one: the two-thread assembly sums in a varying order, issue 10.)
 }
 
+// A footprint at a target load after a load curve of the same problem starts from the curve's states
+// (the CLI chains them): it finds the same equilibrium as a search from the unloaded tyre, within the
+// load tolerance (the two δz differ by at most 2 · tolerance · target / the local stiffness dQz/dδz),
+// and needs fewer Newton iterations.
+TEST(ContactLoadCurve, FootprintFromALoadCurveFindsTheSameState) {
+  const Case& c = example_case();
+  const TyreMesh tm = build_tyre_mesh(c.tyre, coarse_mesh(24, 8));
+  const InflationResult inflated = inflate_for_contact(tm, c.inflation);
+  ASSERT_TRUE(inflated.converged);
+  const ContactSettings settings = test_contact_settings(ContactSettings::Iteration::single_loop);
+  const StaticContactResult curve_result = run_load_curve(tm, c.tyre, c.inflation, settings,
+                                                          load_curve("plane", plane_support(), 20.0, 5), {},
+                                                          &inflated, /*keep_path=*/true);
+  ASSERT_TRUE(curve_result.completed) << curve_result.failure;
+  ASSERT_EQ(curve_result.path.size(), curve_result.points.size());
+  FootprintStudy study;
+  study.name = "footprint";
+  study.support = plane_support();
+  study.target_load = 1500.0;
+  const StaticContactResult scratch = run_footprint(tm, c.tyre, c.inflation, settings, study, {}, &inflated);
+  const StaticContactResult seeded =
+      run_footprint(tm, c.tyre, c.inflation, settings, study, {}, &inflated, &curve_result);
+  ASSERT_TRUE(scratch.completed) << scratch.failure;
+  ASSERT_TRUE(seeded.completed) << seeded.failure;
+  const double tolerance = study.load_tolerance * study.target_load;
+  const double qa = scratch.points.back().patch.Qz_N, qb = seeded.points.back().patch.Qz_N;
+  const double da = scratch.final_state.deflection_mm, db = seeded.final_state.deflection_mm;
+  // Local stiffness from the curve's points around the target.
+  double stiffness = 0.0;
+  for (std::size_t k = 1; k < curve_result.points.size(); ++k)
+    if (curve_result.points[k - 1].patch.Qz_N < study.target_load && curve_result.points[k].patch.Qz_N >= study.target_load)
+      stiffness = (curve_result.points[k].patch.Qz_N - curve_result.points[k - 1].patch.Qz_N) /
+                  (curve_result.points[k].deflection_mm - curve_result.points[k - 1].deflection_mm);
+  ASSERT_GT(stiffness, 0.0);
+  std::printf("  from the unloaded tyre: Qz %.3f N at δz %.5f mm, %d Newton iterations; from the curve: %.3f N at "
+              "%.5f mm, %d Newton iterations; dQz/dδz %.1f N/mm\n",
+              qa, da, scratch.counters.newton_iterations, qb, db, seeded.counters.newton_iterations, stiffness);
+  EXPECT_NEAR(qa, study.target_load, tolerance);
+  EXPECT_NEAR(qb, study.target_load, tolerance);
+  EXPECT_NEAR(da, db, 2.0 * tolerance / stiffness);
+  EXPECT_LT(seeded.counters.newton_iterations, scratch.counters.newton_iterations);
+}
+
 }  // namespace
 }  // namespace tirefem::verification
