@@ -280,9 +280,9 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     ++k;
   }
   for (const RollingStudy& s : c.rolling) {
-    const MeshSettings& settings = s.mesh.value_or(c.mesh);
+    const MeshSettings settings = s.mesh.value_or(c.mesh);  // a copy: the task runs after this loop
     const std::string key = SharedFootprints::key(settings, s.support, s.target_load, s.load_tolerance);
-    auto solve = task(k, "rolling '" + s.name + "'", [&, k, key](const ProgressSink& sink) {
+    auto solve = task(k, "rolling '" + s.name + "'", [&, k, key, settings](const ProgressSink& sink) {
       const TyreMesh& mesh = tyres.mesh(settings);
       if (s.mesh)
         sink(fmt::format("rolling '{}' on its own mesh: {} x {}, {} elements", s.name, settings.circumferential_elements,
