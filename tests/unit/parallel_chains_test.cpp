@@ -1,0 +1,59 @@
+// The studies-side-by-side scheduler: how threads are shared out, that every task runs once and the
+// tasks of a chain in order, and that a failing task stops the others and reaches the caller.
+#include <atomic>
+#include <chrono>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "tirefem/analysis/parallel_chains.hpp"
+
+namespace tirefem {
+namespace {
+
+TEST(ParallelChains, ThreadsAreSharedOutAmongAsManyWorkersAsChains) {
+  EXPECT_EQ(plan_workers(5, 2).workers, 2);
+  EXPECT_EQ(plan_workers(5, 2).threads_per_worker, 1);
+  EXPECT_EQ(plan_workers(1, 2).workers, 1);
+  EXPECT_EQ(plan_workers(1, 2).threads_per_worker, 2);
+  EXPECT_EQ(plan_workers(0, 4).workers, 1);
+  EXPECT_EQ(plan_workers(2, 5).threads_per_worker, 2);
+}
+
+TEST(ParallelChains, EveryTaskRunsOnceAndAChainInOrder) {
+  for (int workers : {1, 2, 3}) {
+    std::mutex m;
+    std::vector<std::vector<int>> seen(4);
+    std::vector<TaskChain> chains(4);
+    for (int c = 0; c < 4; ++c)
+      for (int t = 0; t < 3; ++t)
+        chains[c].push_back([&, c, t] {
+          const std::lock_guard lock(m);
+          seen[c].push_back(t);
+        });
+    std::atomic<bool> stop{false};
+    run_chains(chains, {workers, 1}, stop);
+    for (int c = 0; c < 4; ++c) EXPECT_EQ(seen[c], (std::vector<int>{0, 1, 2})) << workers << " workers, chain " << c;
+    EXPECT_FALSE(stop);
+  }
+}
+
+TEST(ParallelChains, AFailingTaskStopsTheRunAndIsRethrown) {
+  std::atomic<int> after_failure{0};
+  std::vector<TaskChain> chains(2);
+  chains[0] = {[] { throw std::runtime_error("first chain failed"); }, [&] { ++after_failure; }};
+  // The other chain polls the stop flag between its steps, as the studies do through their progress.
+  std::atomic<bool> stop{false};
+  chains[1] = {[&] {
+    for (int i = 0; i < 2000 && !stop; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }, [&] { ++after_failure; }};
+  EXPECT_THROW(run_chains(chains, {2, 1}, stop), std::runtime_error);
+  EXPECT_TRUE(stop);
+  EXPECT_EQ(after_failure, 0);  // no task starts once the run is stopped
+}
+
+}  // namespace
+}  // namespace tirefem
