@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include "tirefem/analysis/run_case.hpp"
 #include "tirefem/io/csv_writer.hpp"
 #include "tirefem/io/vtu_writer.hpp"
 #include "tirefem/results/footprint_report.hpp"
@@ -20,8 +19,6 @@ void ReportWriter::plot(const std::string& stem, const Plot& p) {
 void ReportWriter::heatmap(const std::string& stem, const HeatMap& m) {
   note(write_heatmap(folder_.path("plots/" + stem), m));
 }
-
-bool ReportWriter::is_interrupt(const std::exception& e) { return dynamic_cast<const RunInterrupted*>(&e) != nullptr; }
 
 void ReportWriter::skip(const std::string& name, const std::string& why) {
   skipped_.push_back(fmt::format("{}: {}", name, why));

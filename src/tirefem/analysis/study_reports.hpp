@@ -6,12 +6,11 @@
 
 #include "tirefem/analysis/footprint.hpp"
 #include "tirefem/analysis/rolling.hpp"
+#include "tirefem/analysis/run_case.hpp"
 #include "tirefem/io/plot_writer.hpp"
 #include "tirefem/io/results_folder.hpp"
 
 namespace tirefem {
-
-class RunInterrupted;
 
 // Writes the plots (gnuplot may be missing: warn once) and guards every report: a report that cannot be
 // made (e.g. no ply, hence no cord tension to plot) is skipped with a note, never a failure that would
@@ -26,15 +25,15 @@ class ReportWriter {
   void attempt(const std::string& report_name, F&& write) {
     try {
       write();
+    } catch (const RunInterrupted&) {
+      throw;
     } catch (const std::exception& e) {
-      if (is_interrupt(e)) throw;
       skip(report_name, e.what());
     }
   }
   const std::vector<std::string>& skipped() const { return skipped_; }
 
  private:
-  static bool is_interrupt(const std::exception& e);
   void skip(const std::string& name, const std::string& why);
   void note(bool rendered);
   const ResultsFolder& folder_;

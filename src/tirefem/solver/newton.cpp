@@ -41,7 +41,6 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
   double first_residual = -1.0;
   double energy = 0.0, first_energy = 0.0;  // |Δu·R| of the last and of the first iteration
   double previous_residual = 0.0;
-  double previous_eta = settings_.max_forcing_term;
   // The last step, kept until the residual at its end is known: a step that made the residual grow (or
   // came from a shifted tangent) is checked against the energy and cut back if it does not lower it.
   Eigen::VectorXd base, step;
@@ -166,18 +165,13 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
     const bool fresh = it > 0 && rn > previous_residual;
     double eta = settings_.krylov_tolerance;
     if (settings_.adaptive_krylov_tolerance) {
-      // Eisenstat–Walker forcing term (their choice 2, γ = 0.9, α = 2, with its safeguard): loose while
-      // the residual falls slowly, tight once Newton converges fast; between krylov_tolerance and
-      // max_forcing_term, and no tighter than what brings the residual to a tenth of the Newton tolerance.
-      const double eta_max = settings_.max_forcing_term;
-      eta = eta_max;
-      if (previous_residual > 0 && !restart) {
-        const double safeguard = 0.9 * previous_eta * previous_eta;
-        eta = std::max(0.9 * std::pow(rn / previous_residual, 2.0), safeguard > 0.1 ? safeguard : 0.0);
-      }
+      // Eisenstat–Walker forcing term (their choice 2, γ = 0.9, α = 2): loose while the residual falls
+      // slowly, tight once Newton converges fast; between krylov_tolerance and max_forcing_term, and no
+      // tighter than what brings the residual to a tenth of the Newton tolerance.
+      const double eta_max = std::min(settings_.max_forcing_term, 0.1);
+      eta = previous_residual > 0 && !restart ? 0.9 * std::pow(rn / previous_residual, 2.0) : eta_max;
       eta = std::clamp(eta, settings_.krylov_tolerance, eta_max);
       eta = std::max(eta, std::min(eta_max, 0.1 * settings_.residual_tolerance * reference / rn));
-      previous_eta = eta;
     }
     previous_residual = rn;
     if (!solve_linear(-r, du, fresh, eta)) return out;

@@ -34,7 +34,8 @@ struct NewtonSettings {
   double krylov_tolerance = 1e-3;  // relative to the preconditioned residual (inexact Newton)
   // Eisenstat–Walker forcing terms instead of the fixed krylov_tolerance: loose (up to max_forcing_term)
   // while the residual is far from converged, tight where Newton converges fast, never tighter than the
-  // Newton tolerance needs. Larger than 1e-2 measured worse on the load curve of the example: GMRES on the
+  // Newton tolerance needs. (At most 0.1, so their safeguard against a sudden tightening, which acts
+  // only above 0.1, is not needed.) Larger than 1e-2 measured worse on the load curve of the example: GMRES on the
   // factorisation of another load point then often meets its preconditioned tolerance with a true
   // residual above 0.1, the step is refused and the tangent factorised.
   bool adaptive_krylov_tolerance = false;
@@ -80,9 +81,6 @@ class NewtonSolver {
   NewtonOutcome solve(Eigen::VectorXd& u, double load_factor);
   NonlinearProblem& problem() { return problem_; }
   const LinearSolverStats& linear_stats() const { return linear_.stats(); }
-  // A solve with the last factorisation (of an earlier tangent), e.g. for a tangent predictor.
-  bool has_factorization() const { return linear_.has_factorization(); }
-  Eigen::VectorXd solve_with_last_factorization(const Eigen::VectorXd& rhs) { return linear_.solve(rhs); }
   int total_iterations() const { return total_iterations_; }
   double residual_tolerance() const { return settings_.residual_tolerance; }
   void set_residual_tolerance(double tolerance) { settings_.residual_tolerance = tolerance; }
