@@ -184,7 +184,7 @@ class RollingModel {
 
   RollingFigures figures(const Eigen::VectorXd& u) const {
     return rolling_figures(contact_->points(), contact_->evaluate(u), friction_->evaluate(u), tm_.axis_z,
-                           tm_.half_model, result_.reverse);
+                           tm_.half_model, result_.reverse, wheel_frame(*support_, deflection_, result_.reverse));
   }
   // Qy of a full-stick plan at the static state for Rk (no solve): affine in Rk, it estimates Re.
   double static_full_stick_Qy(double rolling_radius) {

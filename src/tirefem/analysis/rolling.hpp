@@ -32,11 +32,31 @@ struct RollingFigures {
   double contact_area_mm2 = 0.0;
   double stick_area_fraction = 0.0;  // stick area / contact area
   double max_traction_MPa = 0.0;     // largest |qt|
+  // Tyre practice (MODEL.md §7): the contact forces and moments on the tyre in the W-axis system of ISO 8855
+  // / TYDEX, at the contact centre C (the point of the support under the axle, in the wheel plane x = 0):
+  // X along the direction of travel in the support's plane, Z the support's normal (up), Y = Z × X (to the
+  // left). Fx is Qy; Fz ≈ Qz (Qz is along the model's z, Fz along the support's normal: they differ under
+  // camber). Moments about C: overturning Mx, rolling resistance My (from the tread's shear alone: the
+  // model has no hysteresis), aligning Mz. The pneumatic trail −Mz/Fy (when |Fy| > 1e-3 Fz) and the centre
+  // of pressure (X, Y of Σ x Fn / Σ Fn over the support's normal forces).
+  double Fx_N = 0.0, Fy_N = 0.0, Fz_N = 0.0;
+  double overturning_moment_Nmm = 0.0, rolling_moment_Nmm = 0.0, aligning_moment_Nmm = 0.0;
+  std::optional<double> pneumatic_trail_mm;
+  Eigen::Vector2d centre_of_pressure_mm = Eigen::Vector2d::Zero();
 };
+
+// The W-axis frame of a rolling state: C and the unit axes, in the model's coordinates.
+struct WheelFrame {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  Eigen::Vector3d x = Eigen::Vector3d::UnitY(), y = -Eigen::Vector3d::UnitX(), z = Eigen::Vector3d::UnitZ();
+};
+// C is the support's point under the axle at the given deflection, Z its normal there, X the direction
+// of travel (+y, or −y when reversed) projected on the support's plane.
+WheelFrame wheel_frame(const SupportSurface& support, double deflection, bool reverse);
 
 RollingFigures rolling_figures(const std::vector<TreadPoint>& points, const std::vector<TreadPointState>& normal,
                                const std::vector<TreadTraction>& tangential, double axle_z, bool half_model,
-                               bool reverse);
+                               bool reverse, const WheelFrame& frame);
 
 struct RollingSolveCounts {
   int contact_iterations = 0;  // outer iterations of the last solve (1 for the single loop)

@@ -9,16 +9,32 @@
 
 namespace tirefem {
 
+WheelFrame wheel_frame(const SupportSurface& support, double deflection, bool reverse) {
+  WheelFrame w;
+  w.centre = Eigen::Vector3d(0.0, 0.0, support.height(0.0, 0.0, deflection));
+  const Eigen::Vector3d normal = -support.penetration(w.centre, deflection).gradient.normalized();
+  const Eigen::Vector3d travel(0.0, reverse ? -1.0 : 1.0, 0.0);
+  w.z = normal;
+  w.x = (travel - travel.dot(normal) * normal).normalized();
+  w.y = w.z.cross(w.x);
+  return w;
+}
+
 RollingFigures rolling_figures(const std::vector<TreadPoint>& points, const std::vector<TreadPointState>& normal,
                                const std::vector<TreadTraction>& tangential, double axle_z, bool half_model,
-                               bool reverse) {
+                               bool reverse, const WheelFrame& frame) {
   RollingFigures f;
-  double stick_area = 0.0, moment = 0.0;
+  double stick_area = 0.0, moment = 0.0, normal_sum = 0.0;
+  Eigen::Vector3d about_centre = Eigen::Vector3d::Zero(), pressure_moment = Eigen::Vector3d::Zero();
   for (std::size_t q = 0; q < points.size(); ++q) {
     const Eigen::Vector3d force = normal[q].force + tangential[q].force;
     const Eigen::Vector3d& x = normal[q].position;
     f.force_N += force;
     moment += x.y() * force.z() - (x.z() - axle_z) * force.y();  // (r − r_axle) × F, x component
+    about_centre += (x - frame.centre).cross(force);
+    const double fn = normal[q].force.dot(frame.z);
+    normal_sum += fn;
+    pressure_moment += fn * (x - frame.centre);
     if (normal[q].pressure > 0) {
       f.contact_area_mm2 += points[q].weight;
       if (tangential[q].status == TreadContact::stick) stick_area += points[q].weight;
@@ -27,10 +43,15 @@ RollingFigures rolling_figures(const std::vector<TreadPoint>& points, const std:
       f.max_traction_MPa = std::max(f.max_traction_MPa, std::abs(tangential[q].traction));
   }
   f.stick_area_fraction = f.contact_area_mm2 > 0 ? stick_area / f.contact_area_mm2 : 0.0;
-  if (half_model) {  // the mirror image in x = 0 doubles all but the lateral force
+  if (half_model) {
+    // The mirror image in x = 0 (positions (−x, y, z), forces (−Fx, Fy, Fz)) doubles all but the lateral
+    // force and the moments about y and z, which it cancels; C lies on x = 0.
     f.force_N *= 2.0;
     f.force_N.x() = 0.0;
     moment *= 2.0;
+    about_centre = Eigen::Vector3d(2.0 * about_centre.x(), 0.0, 0.0);
+    pressure_moment = Eigen::Vector3d(0.0, 2.0 * pressure_moment.y(), 2.0 * pressure_moment.z());
+    normal_sum *= 2.0;
     f.contact_area_mm2 *= 2.0;
   }
   // A reversed study is the mirror image (y → −y) of a forward one: report its figures in that frame.
@@ -38,6 +59,17 @@ RollingFigures rolling_figures(const std::vector<TreadPoint>& points, const std:
   f.Qz_N = f.force_N.z();
   f.Qy_N = sign * f.force_N.y();
   f.Mx_Nmm = sign * moment;
+  f.Fx_N = f.force_N.dot(frame.x);
+  f.Fy_N = f.force_N.dot(frame.y);
+  f.Fz_N = f.force_N.dot(frame.z);
+  f.overturning_moment_Nmm = about_centre.dot(frame.x);
+  f.rolling_moment_Nmm = about_centre.dot(frame.y);
+  f.aligning_moment_Nmm = about_centre.dot(frame.z);
+  if (std::abs(f.Fy_N) > 1e-3 * std::abs(f.Fz_N)) f.pneumatic_trail_mm = -f.aligning_moment_Nmm / f.Fy_N;
+  if (normal_sum != 0.0) {
+    const Eigen::Vector3d cp = pressure_moment / normal_sum;
+    f.centre_of_pressure_mm = Eigen::Vector2d(cp.dot(frame.x), cp.dot(frame.y));
+  }
   return f;
 }
 

@@ -161,6 +161,12 @@ struct RollingStateSpec {
   double slip = 0.0;            // κ (given_slip, full_stick)
   double rolling_radius = 0.0;  // Rk, mm (given_radius)
   bool braking = false;         // full_slip: locked wheel (true) or spinning wheel (false)
+  // Cornering (MODEL.md §7; full model only), degrees, ISO 8855 / TYDEX W-axis signs (README): the slip
+  // angle α from the wheel's heading to its direction of travel, positive counter-clockwise seen from
+  // above (α > 0 gives Fy < 0); the camber (inclination) γ, positive with the top of the wheel leaning to
+  // the right of the heading (ISO −Y).
+  double slip_angle_deg = 0.0;
+  double camber_deg = 0.0;
 };
 
 // The longitudinal force–slip curve Qy(κ): `points` slips evenly from `from` to `to`, at the footprint's
@@ -170,6 +176,25 @@ struct SlipSweep {
   double from = -0.1;
   double to = 0.1;
   int points = 15;
+  bool hold_load = false;
+};
+
+// The lateral force and aligning moment curves Fy(α), Mz(α): `points` slip angles (degrees) evenly from
+// `from` to `to`, at the longitudinal slip κ = `slip` (0: the free-rolling Re of α = 0, the Magic
+// Formula's pure side slip) and camber `camber_deg`, the load held as for SlipSweep.
+struct SlipAngleSweep {
+  double from = -12.0;
+  double to = 12.0;
+  int points = 13;
+  double slip = 0.0;
+  double camber_deg = 0.0;
+  bool hold_load = false;
+};
+
+// Combined slip: every (κ, α) pair of the two lists, the load held as for SlipSweep.
+struct CombinedSlipGrid {
+  std::vector<double> slips;
+  std::vector<double> slip_angles_deg;
   bool hold_load = false;
 };
 
@@ -185,6 +210,13 @@ struct RollingStudy {
   bool reverse = false;          // travel in −y
   std::vector<RollingStateSpec> states;
   std::optional<SlipSweep> sweep;
+  // The tread shear of eq. (16): along the support's motion only (the paper's), or as a 2-vector in the
+  // support's plane (MODEL.md §7; needed for slip angle and camber). Unset: planar on the full model,
+  // longitudinal on the half model (the paper's).
+  enum class TreadShear { longitudinal, planar };
+  std::optional<TreadShear> tread_shear;
+  std::optional<SlipAngleSweep> angle_sweep;
+  std::optional<CombinedSlipGrid> combined;
   // Its own mesh (the paper rolls on 80 × 46 while its static studies use 120 × 46); unset: the case's.
   std::optional<MeshSettings> mesh;
 };

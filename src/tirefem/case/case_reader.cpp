@@ -86,7 +86,7 @@ void check_case(const FieldChecker& checker, const Case& c) {
   for (std::size_t i = 0; i < c.rolling.size(); ++i) {
     const std::string p = index("rolling", i);
     check_study_name(checker, c.rolling[i].name, join(p, "name"), names);
-    check_rolling(checker, c.rolling[i], p, scale);
+    check_rolling(checker, c.rolling[i], p, scale, c.mesh.half_model);
   }
 }
 

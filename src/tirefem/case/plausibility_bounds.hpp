@@ -45,6 +45,8 @@ inline constexpr int kMaxSurfacePower = 8;        // support surface terms: x^p 
 inline constexpr int kMaxQuadrature = 8;          // contact: Gauss points per direction
 inline constexpr double kMaxLoadTolerance = 0.1;  // footprint: relative tolerance on the vertical load
 inline constexpr double kMaxFriction = 5.0;       // rolling: Coulomb coefficient μ
+inline constexpr double kMaxSlipAngleDeg = 45.0;  // rolling: slip angle α, degrees (a tyre slides fully long before)
+inline constexpr double kMaxCamberDeg = 20.0;     // rolling: camber γ, degrees
 inline constexpr double kMaxSlip = 10.0;          // rolling: longitudinal slip κ (> −1: −1 is a locked wheel)
 // given_radius: the slip κ = R/Rk − 1 a rolling radius implies (R the tyre's outer radius, which the
 // free-rolling radius Re is close to) must lie in [kMinImpliedSlip, kMaxSlip]. Below −0.99 (Rk > 100 R)

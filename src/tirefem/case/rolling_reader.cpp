@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <map>
 
 #include "tirefem/case/mesh_reader.hpp"
@@ -29,14 +30,22 @@ RollingStateSpec read_state(TomlFields& f, const toml::node& n, const std::strin
                                : s.kind == Kind::given_radius                           ? "rolling_radius"
                                : s.kind == Kind::full_slip                              ? "wheel"
                                                                                         : "";
+  // Slip angle and camber go with every state but full slip (whose traction direction they would change).
+  const bool cornering = s.kind != Kind::full_slip;
   for (auto&& [k, v] : *raw) {  // a key of another state (typos: table() below)
-    if (k.str() == own || (k.str() != "slip" && k.str() != "rolling_radius" && k.str() != "wheel")) continue;
+    const bool angle = k.str() == "slip_angle" || k.str() == "camber";
+    if (k.str() == own || (angle && cornering) ||
+        (!angle && k.str() != "slip" && k.str() != "rolling_radius" && k.str() != "wheel"))
+      continue;
     f.mark(join(path, k.str()), k.source().begin);
     f.fail(join(path, k.str()),
-           fmt::format("not allowed in a \"{}\" state (it takes {})", kind,
-                       own.empty() ? std::string("only state and name") : fmt::format("state, name and {}", own)));
+           fmt::format("not allowed in a \"{}\" state (it takes {}{})", kind,
+                       own.empty() ? std::string("state, name") : fmt::format("state, name, {}", own),
+                       cornering ? ", slip_angle and camber" : ""));
   }
-  const toml::table& t = own.empty() ? f.table(n, path, {"state", "name"}) : f.table(n, path, {"state", "name", own});
+  const toml::table& t = own.empty() ? f.table(n, path, {"state", "name", "slip_angle", "camber"})
+                         : cornering ? f.table(n, path, {"state", "name", own, "slip_angle", "camber"})
+                                     : f.table(n, path, {"state", "name", own});
   switch (s.kind) {
     case Kind::free:
       s.name = "free";
@@ -59,8 +68,36 @@ RollingStateSpec read_state(TomlFields& f, const toml::node& n, const std::strin
       s.name = s.braking ? "full_slip_locked" : "full_slip_spinning";
       break;
   }
+  if (cornering) {
+    f.opt_number(t, path, "slip_angle", s.slip_angle_deg, " (degrees)");
+    f.opt_number(t, path, "camber", s.camber_deg, " (degrees)");
+    if (s.slip_angle_deg != 0.0) s.name += fmt::format("_alpha_{:g}", s.slip_angle_deg);
+    if (s.camber_deg != 0.0) s.name += fmt::format("_camber_{:g}", s.camber_deg);
+  }
   if (const toml::node* v = f.get(t, path, "name")) s.name = f.string(*v, join(path, "name"));
   return s;
+}
+
+SlipAngleSweep read_angle_sweep(TomlFields& f, const toml::node& n, const std::string& sp) {
+  const toml::table& w = f.table(n, sp, {"from", "to", "points", "hold", "slip", "camber"});
+  SlipAngleSweep sw;
+  f.opt_number(w, sp, "from", sw.from, " (slip angle, degrees)");
+  f.opt_number(w, sp, "to", sw.to, " (slip angle, degrees)");
+  f.opt_integer(w, sp, "points", sw.points);
+  f.opt_number(w, sp, "slip", sw.slip, " (slip κ)");
+  f.opt_number(w, sp, "camber", sw.camber_deg, " (degrees)");
+  if (const toml::node* h = f.get(w, sp, "hold")) sw.hold_load = f.choice(*h, join(sp, "hold"), {"deflection", "load"}) == 1;
+  return sw;
+}
+
+CombinedSlipGrid read_combined(TomlFields& f, const toml::node& n, const std::string& sp) {
+  const toml::table& w = f.table(n, sp, {"slips", "slip_angles", "hold"});
+  CombinedSlipGrid g;
+  g.slips = f.numbers(f.need(w, sp, "slips", "an array of slips κ"), join(sp, "slips"), " (slip κ)");
+  g.slip_angles_deg = f.numbers(f.need(w, sp, "slip_angles", "an array of slip angles (degrees)"),
+                                join(sp, "slip_angles"), " (degrees)");
+  if (const toml::node* h = f.get(w, sp, "hold")) g.hold_load = f.choice(*h, join(sp, "hold"), {"deflection", "load"}) == 1;
+  return g;
 }
 
 SlipSweep read_sweep(TomlFields& f, const toml::node& n, const std::string& sp) {
@@ -80,6 +117,12 @@ void check_slip(const FieldChecker& c, double v, const std::string& path) {
 }
 
 // κ = Re/Rk − 1 (analysis/rolling.cpp), with Re estimated by the tyre's outer radius R.
+void check_angle(const FieldChecker& c, double degrees, const std::string& path, double largest) {
+  c.finite(degrees, path);
+  if (!(std::abs(degrees) <= largest))
+    c.fail(path, fmt::format("must be within ±{} degrees (got {})", largest, degrees));
+}
+
 void check_rolling_radius(const FieldChecker& c, double rk, const std::string& path, double outer_radius) {
   c.positive(rk, path);
   const double implied = outer_radius / rk - 1.0;
@@ -99,6 +142,8 @@ void check_states(const FieldChecker& c, const RollingStudy& s, const std::strin
     const std::string p = index(join(path, "states"), k);
     if (st.kind == Kind::given_slip || st.kind == Kind::full_stick) check_slip(c, st.slip, join(p, "slip"));
     if (st.kind == Kind::given_radius) check_rolling_radius(c, st.rolling_radius, join(p, "rolling_radius"), tyre.outer_radius);
+    check_angle(c, st.slip_angle_deg, join(p, "slip_angle"), kMaxSlipAngleDeg);
+    check_angle(c, st.camber_deg, join(p, "camber"), kMaxCamberDeg);
     const std::string np = join(p, "name");
     check_file_name(c, st.name, np, "_.+-", "letters A-Z a-z, digits 0-9, '_', '.', '+' and '-'",
                     "the state in tables, plots and the summary");
@@ -113,7 +158,8 @@ void check_states(const FieldChecker& c, const RollingStudy& s, const std::strin
 
 RollingStudy read_rolling(TomlFields& f, const toml::node& n, const std::string& path, const MeshSettings& case_mesh) {
   const toml::table& t = f.table(
-      n, path, {"name", "support", "target_load", "load_tolerance", "friction", "reverse", "states", "sweep", "mesh"});
+      n, path, {"name", "support", "target_load", "load_tolerance", "friction", "reverse", "states", "sweep",
+                "angle_sweep", "combined", "tread_shear", "mesh"});
   RollingStudy s;
   if (const toml::node* v = f.get(t, path, "mesh")) s.mesh = read_mesh(f, *v, join(path, "mesh"), case_mesh);
   read_study_name_and_support(f, t, path, s.name, s.support);
@@ -127,10 +173,18 @@ RollingStudy read_rolling(TomlFields& f, const toml::node& n, const std::string&
     for (std::size_t i = 0; i < a.size(); ++i) s.states.push_back(read_state(f, a[i], index(sp, i)));
   }
   if (const toml::node* v = f.get(t, path, "sweep")) s.sweep = read_sweep(f, *v, join(path, "sweep"));
+  if (const toml::node* v = f.get(t, path, "angle_sweep"))
+    s.angle_sweep = read_angle_sweep(f, *v, join(path, "angle_sweep"));
+  if (const toml::node* v = f.get(t, path, "combined")) s.combined = read_combined(f, *v, join(path, "combined"));
+  if (const toml::node* v = f.get(t, path, "tread_shear"))
+    s.tread_shear = static_cast<RollingStudy::TreadShear>(
+        f.choice(*v, join(path, "tread_shear"), {"longitudinal", "planar"}));  // enum order
   return s;
 }
 
-void check_rolling(const FieldChecker& c, const RollingStudy& s, const std::string& path, const TyreScale& tyre) {
+void check_rolling(const FieldChecker& c, const RollingStudy& s, const std::string& path, const TyreScale& tyre,
+                   bool case_half_model) {
+  const bool mesh_is_half = s.mesh ? s.mesh->half_model : case_half_model;
   const std::string sp = join(path, "support");
   check_support(c, s.support, sp, tyre.outer_radius);
   // The steady state is frozen in the road's frame: the road must look the same all along y.
@@ -144,7 +198,7 @@ void check_rolling(const FieldChecker& c, const RollingStudy& s, const std::stri
   check_load(c, s.target_load, s.load_tolerance, path);
   c.positive(s.friction, join(path, "friction"));
   c.at_most(s.friction, kMaxFriction, join(path, "friction"));
-  if (s.states.empty() && !s.sweep)
+  if (s.states.empty() && !s.sweep && !s.angle_sweep && !s.combined)
     c.fail(path, "needs states or a sweep (states = [{ state = \"free\" }, ...] or sweep = { from, to, points })");
   check_states(c, s, path, tyre);
   if (s.sweep) {
@@ -155,6 +209,46 @@ void check_rolling(const FieldChecker& c, const RollingStudy& s, const std::stri
       c.fail(join(wp, "to"), fmt::format("must be greater than from = {} (got {})", s.sweep->from, s.sweep->to));
     c.int_range(s.sweep->points, 2, kMaxSweepPoints, join(wp, "points"));
   }
+  if (s.angle_sweep) {
+    const std::string wp = join(path, "angle_sweep");
+    check_angle(c, s.angle_sweep->from, join(wp, "from"), kMaxSlipAngleDeg);
+    check_angle(c, s.angle_sweep->to, join(wp, "to"), kMaxSlipAngleDeg);
+    if (!(s.angle_sweep->from < s.angle_sweep->to))
+      c.fail(join(wp, "to"), fmt::format("must be greater than from = {} (got {})", s.angle_sweep->from, s.angle_sweep->to));
+    c.int_range(s.angle_sweep->points, 2, kMaxSweepPoints, join(wp, "points"));
+    check_slip(c, s.angle_sweep->slip, join(wp, "slip"));
+    check_angle(c, s.angle_sweep->camber_deg, join(wp, "camber"), kMaxCamberDeg);
+  }
+  if (s.combined) {
+    const std::string gp = join(path, "combined");
+    if (s.combined->slips.empty()) c.fail(join(gp, "slips"), "must list at least one slip κ");
+    if (s.combined->slip_angles_deg.empty()) c.fail(join(gp, "slip_angles"), "must list at least one slip angle");
+    if (s.combined->slips.size() * s.combined->slip_angles_deg.size() > static_cast<std::size_t>(kMaxSweepPoints))
+      c.fail(gp, fmt::format("at most {} (κ, α) points (got {} × {})", kMaxSweepPoints, s.combined->slips.size(),
+                             s.combined->slip_angles_deg.size()));
+    for (std::size_t k = 0; k < s.combined->slips.size(); ++k) check_slip(c, s.combined->slips[k], index(join(gp, "slips"), k));
+    for (std::size_t k = 0; k < s.combined->slip_angles_deg.size(); ++k)
+      check_angle(c, s.combined->slip_angles_deg[k], index(join(gp, "slip_angles"), k), kMaxSlipAngleDeg);
+  }
+  // Slip angle and camber break the symmetry about the equatorial plane; camber tilts a plane road.
+  const auto cornering = [&](double alpha, double gamma, const std::string& where) {
+    if ((alpha != 0.0 || gamma != 0.0) && mesh_is_half)
+      c.fail(where, "needs the full model (bead to bead): give the study mesh = { half_model = false, ... }");
+    if ((alpha != 0.0 || gamma != 0.0) && s.tread_shear == RollingStudy::TreadShear::longitudinal)
+      c.fail(where, "needs tread_shear = \"planar\" (the longitudinal shear has no lateral component)");
+    if (gamma != 0.0 && s.support.kind != SupportDescription::Kind::plane)
+      c.fail(where, "camber is supported on a plane support only");
+  };
+  for (std::size_t k = 0; k < s.states.size(); ++k) {
+    const std::string p = index(join(path, "states"), k);
+    cornering(s.states[k].slip_angle_deg, 0.0, join(p, "slip_angle"));
+    cornering(0.0, s.states[k].camber_deg, join(p, "camber"));
+  }
+  if (s.angle_sweep) {
+    cornering(1.0, 0.0, join(path, "angle_sweep"));
+    cornering(0.0, s.angle_sweep->camber_deg, join(join(path, "angle_sweep"), "camber"));
+  }
+  if (s.combined) cornering(1.0, 0.0, join(path, "combined"));
 }
 
 }  // namespace tirefem::case_reading

@@ -29,6 +29,8 @@ namespace tirefem::case_reading {
 RollingStudy read_rolling(TomlFields& f, const toml::node& n, const std::string& path, const MeshSettings& case_mesh);
 
 // All checks but the name (check_study_name) and the own mesh (check_mesh).
-void check_rolling(const FieldChecker& c, const RollingStudy& s, const std::string& path, const TyreScale& tyre);
+// `case_half_model`: the case's mesh, which a study without its own mesh rolls on.
+void check_rolling(const FieldChecker& c, const RollingStudy& s, const std::string& path, const TyreScale& tyre,
+                   bool case_half_model);
 
 }  // namespace tirefem::case_reading
