@@ -154,8 +154,8 @@ TEST(CaseReaderRolling, UnknownKeysSayDidYouMean) {
   std::string text = rolling_with("frictoin = 0.5");
   EXPECT_EQ(error_of(text), where(text, "frictoin") +
                                 "rolling[0].frictoin: unknown key; expected one of: name, support, "
-                                "target_load, load_tolerance, friction, reverse, states, sweep, mesh (did you mean "
-                                "'friction'?)");
+                                "target_load, load_tolerance, friction, reverse, states, sweep, angle_sweep, combined, "
+                                "tread_shear, mesh (did you mean 'friction'?)");
   EXPECT_CONTAINS(error_of(rolling_with("theory = \"linear\"")), "rolling[0].theory: unknown key");
   text = rolling_with("sweep = { from = 0.0, point = 3 }");
   EXPECT_EQ(error_of(text), where(text, "point =") +
@@ -163,8 +163,8 @@ TEST(CaseReaderRolling, UnknownKeysSayDidYouMean) {
                                 "you mean 'points'?)");
   text = state("{ state = \"given_slip\", slipp = 0.1 }");
   EXPECT_EQ(error_of(text), where(text, "slipp") +
-                                "rolling[0].states[0].slipp: unknown key; expected one of: state, name, slip "
-                                "(did you mean 'slip'?)");
+                                "rolling[0].states[0].slipp: unknown key; expected one of: state, name, slip, "
+                                "slip_angle, camber (did you mean 'slip'?)");
   text = state("{ stat = \"free\" }");
   EXPECT_EQ(error_of(text), where(text, "stat =") +
                                 "rolling[0].states[0].stat: unknown key; expected one of: state, name, slip, "
@@ -193,14 +193,17 @@ TEST(CaseReaderRolling, KeysOfAnotherStateAreErrors) {
                                 "state, name and wheel)");
   text = state("{ state = \"free\", wheel = \"locked\" }");
   EXPECT_EQ(error_of(text), where(text, "wheel") +
-                                "rolling[0].states[0].wheel: not allowed in a \"free\" state (it takes only "
-                                "state and name)");
+                                "rolling[0].states[0].wheel: not allowed in a \"free\" state (it takes state, "
+                                "name, slip_angle and camber)");
   EXPECT_CONTAINS(error_of(state("{ state = \"given_slip\", slip = 0.1, rolling_radius = 280.0 }")),
                   "rolling[0].states[0].rolling_radius: not allowed in a \"given_slip\" state (it takes "
-                  "state, name and slip)");
+                  "state, name, slip, slip_angle and camber)");
   EXPECT_CONTAINS(error_of(state("{ state = \"given_radius\", rolling_radius = 280.0, slip = 0.1 }")),
-                  "rolling[0].states[0].slip: not allowed in a \"given_radius\" state (it takes state, name "
-                  "and rolling_radius)");
+                  "rolling[0].states[0].slip: not allowed in a \"given_radius\" state (it takes state, name, "
+                  "rolling_radius, slip_angle and camber)");
+  EXPECT_CONTAINS(error_of(state("{ state = \"full_slip\", slip_angle = 2.0 }")),
+                  "rolling[0].states[0].slip_angle: not allowed in a \"full_slip\" state (it takes state, name "
+                  "and wheel)");
 }
 
 TEST(CaseReaderRolling, GivenSlipNeedsASlipInRange) {
@@ -459,6 +462,57 @@ TEST(CaseReaderRollingSweep, HoldIsDeflectionOrLoad) {
   const std::string e = error_of(rolling_with("sweep = { hold = \"axle\" }"));
   EXPECT_NE(e.find("rolling[0].sweep.hold"), std::string::npos) << e;
   EXPECT_NE(e.find("load"), std::string::npos) << e;
+}
+
+// Cornering (issue 11): slip angle and camber per state, the α sweep and the combined (κ, α) grid, read
+// back; they need the full model (and camber a plane), each refusal naming its field.
+TEST(CaseReaderRolling, ReadsCorneringStatesAndSweeps) {
+  const Case c = parse_case(rolling_with(
+      "mesh = { half_model = false }\n"
+      "angle_sweep = { from = -6.0, to = 6.0, points = 7, hold = \"load\", slip = 0.01, camber = 1.5 }\n"
+      "combined = { slips = [-0.05, 0.05], slip_angles = [2.0, 4.0] }\n",
+      "states = [{ state = \"free\", slip_angle = 2.0 }, { state = \"given_slip\", slip = 0.02, slip_angle = -1.0, "
+      "camber = 3.0 }]"), "case.toml");
+  const RollingStudy& r = c.rolling.front();
+  ASSERT_EQ(r.states.size(), 2u);
+  EXPECT_EQ(r.states[0].slip_angle_deg, 2.0);
+  EXPECT_EQ(r.states[0].name, "free_alpha_2");
+  EXPECT_EQ(r.states[1].slip_angle_deg, -1.0);
+  EXPECT_EQ(r.states[1].camber_deg, 3.0);
+  EXPECT_EQ(r.states[1].name, "slip_0.02_alpha_-1_camber_3");
+  ASSERT_TRUE(r.angle_sweep.has_value());
+  EXPECT_EQ(r.angle_sweep->from, -6.0);
+  EXPECT_EQ(r.angle_sweep->to, 6.0);
+  EXPECT_EQ(r.angle_sweep->points, 7);
+  EXPECT_TRUE(r.angle_sweep->hold_load);
+  EXPECT_EQ(r.angle_sweep->slip, 0.01);
+  EXPECT_EQ(r.angle_sweep->camber_deg, 1.5);
+  ASSERT_TRUE(r.combined.has_value());
+  EXPECT_EQ(r.combined->slips, (std::vector<double>{-0.05, 0.05}));
+  EXPECT_EQ(r.combined->slip_angles_deg, (std::vector<double>{2.0, 4.0}));
+  EXPECT_FALSE(r.tread_shear.has_value());
+}
+
+TEST(CaseReaderRolling, CorneringNeedsTheFullModelAndCamberAPlane) {
+  EXPECT_CONTAINS(error_of(state("{ state = \"free\", slip_angle = 2.0 }")),
+                  "rolling[0].states[0].slip_angle: needs the full model (bead to bead)");
+  EXPECT_CONTAINS(error_of(rolling_with("angle_sweep = { from = -2.0, to = 2.0, points = 3 }")),
+                  "rolling[0].angle_sweep: needs the full model");
+  EXPECT_CONTAINS(error_of(tyre_with("[[rolling]]\nname = \"r\"\nsupport = { kind = \"drum\", diameter = 1830.0 }\n"
+                                     "mesh = { half_model = false }\n"
+                                     "states = [{ state = \"free\", camber = 2.0 }]\n")),
+                  "rolling[0].states[0].camber: camber is supported on a plane support only");
+  EXPECT_CONTAINS(error_of(rolling_with("mesh = { half_model = false }\ntread_shear = \"longitudinal\"",
+                                        "states = [{ state = \"free\", slip_angle = 1.0 }]")),
+                  "rolling[0].states[0].slip_angle: needs tread_shear = \"planar\"");
+  EXPECT_CONTAINS(error_of(rolling_with("mesh = { half_model = false }", "states = [{ state = \"free\", slip_angle = 50.0 }]")),
+                  "rolling[0].states[0].slip_angle: must be within ±45 degrees (got 50)");
+  EXPECT_CONTAINS(error_of(rolling_with("mesh = { half_model = false }\nangle_sweep = { from = 2.0, to = 1.0 }")),
+                  "rolling[0].angle_sweep.to: must be greater than from = 2 (got 1)");
+  EXPECT_CONTAINS(error_of(rolling_with("mesh = { half_model = false }\ncombined = { slips = [], slip_angles = [1.0] }")),
+                  "rolling[0].combined.slips: must list at least one slip κ");
+  EXPECT_CONTAINS(error_of(rolling_with("tread_shear = \"lateral\"")),
+                  "rolling[0].tread_shear: must be \"longitudinal\" or \"planar\"");
 }
 }  // namespace
 }  // namespace tirefem

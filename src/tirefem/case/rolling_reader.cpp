@@ -32,6 +32,11 @@ RollingStateSpec read_state(TomlFields& f, const toml::node& n, const std::strin
                                                                                         : "";
   // Slip angle and camber go with every state but full slip (whose traction direction they would change).
   const bool cornering = s.kind != Kind::full_slip;
+  std::vector<std::string> keys{"state", "name"};
+  if (!own.empty()) keys.emplace_back(own);
+  if (cornering) keys.insert(keys.end(), {"slip_angle", "camber"});
+  std::string allowed = keys.front();
+  for (std::size_t i = 1; i < keys.size(); ++i) allowed += (i + 1 == keys.size() ? " and " : ", ") + keys[i];
   for (auto&& [k, v] : *raw) {  // a key of another state (typos: table() below)
     const bool angle = k.str() == "slip_angle" || k.str() == "camber";
     if (k.str() == own || (angle && cornering) ||
@@ -39,9 +44,7 @@ RollingStateSpec read_state(TomlFields& f, const toml::node& n, const std::strin
       continue;
     f.mark(join(path, k.str()), k.source().begin);
     f.fail(join(path, k.str()),
-           fmt::format("not allowed in a \"{}\" state (it takes {}{})", kind,
-                       own.empty() ? std::string("state, name") : fmt::format("state, name, {}", own),
-                       cornering ? ", slip_angle and camber" : ""));
+           fmt::format("not allowed in a \"{}\" state (it takes {})", kind, allowed));
   }
   const toml::table& t = own.empty() ? f.table(n, path, {"state", "name", "slip_angle", "camber"})
                          : cornering ? f.table(n, path, {"state", "name", own, "slip_angle", "camber"})
