@@ -17,6 +17,7 @@
 // the same plan's decisions and the same residual as the 1D mode to 1e-12 of its largest entry (only the
 // round-off of η_A = (1 − w) η_a + w η_b separates them). Coulomb bound: |q| ≤ μ kp g (1 + 1e-12) at every
 // point, |q| = μ kp g to 1e-12 at slip points. Σ force = −Σ residual per component to 1e-10 of Σ|force|.
+// The residual and tangent are bit-identical on 1 and 2 threads.
 //
 // State: as tread_friction_tangent_test.cpp (patch of form_fd_support.hpp, δz = 4 mm, kp = 1.3 N/mm³,
 // G = 0.9 MPa, hp = 7 mm, μ = 0.2, Rk 5 % below the tread radius, random ±0.2 mm on every DOF, the node row
@@ -326,6 +327,28 @@ TEST(TreadFrictionPlanar, EvaluateBoundAndForces) {
                   "max |q_b| %.3f MPa\n",
                   label.c_str(), bound, slip_error, force_error, lateral);
     }
+}
+
+// ---- 5. determinism -------------------------------------------------------------------------------------
+
+// The assembly is parallel over lines and sums per-point slots in point order: residual and tangent must be
+// bit-identical on 1 and 2 threads.
+TEST(TreadFrictionPlanar, SameResultOnAnyThreadCount) {
+  const ShellMesh mesh = tyre_patch_mesh();
+  TestDrum drum(kDrumRadius);
+  FrictionOnly f = friction_only(mesh, drum, -1, law_of(FrictionLaw::Mode::coulomb), true, 0.05);
+  std::mt19937 rng(4711);
+  const Eigen::VectorXd u = random_state(mesh, rng, 0.2, 3.5, 5.0, lateral_push(0.05));
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const Eigen::MatrixXd k1 = f.tangent(u);
+  const Eigen::VectorXd r1 = f.problem->system().residual();
+  omp_set_num_threads(2);
+  const Eigen::MatrixXd k2 = f.tangent(u);
+  const Eigen::VectorXd r2 = f.problem->system().residual();
+  omp_set_num_threads(threads);
+  EXPECT_EQ((k1 - k2).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ((r1 - r2).cwiseAbs().maxCoeff(), 0.0);
 }
 
 }  // namespace
