@@ -28,10 +28,9 @@ TreadFrictionForm::TreadFrictionForm(const ShellMesh& mesh, std::vector<TreadPoi
     std::sort(line.begin(), line.end(), [this](int a, int b) { return flow_angle(a) < flow_angle(b); });
     lines_.push_back(std::move(line));
   }
-  line_of_.assign(points_.size(), -1);
   line_position_.assign(points_.size(), -1);
-  for (int l = 0; l < static_cast<int>(lines_.size()); ++l)
-    for (int i = 0; i < static_cast<int>(lines_[l].size()); ++i) line_of_[lines_[l][i]] = l, line_position_[lines_[l][i]] = i;
+  for (const auto& line : lines_)
+    for (int i = 0; i < static_cast<int>(line.size()); ++i) line_position_[line[i]] = i;
 }
 
 void TreadFrictionForm::add_pattern(PatternBuilder& pattern) const {

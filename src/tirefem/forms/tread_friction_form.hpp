@@ -137,7 +137,7 @@ class TreadFrictionForm final : public Form {
   const ShellMesh& mesh_;
   std::vector<TreadPoint> points_;
   std::vector<std::vector<int>> lines_;
-  std::vector<int> line_of_, line_position_;  // per point: its line and its index in it
+  std::vector<int> line_position_;  // per point: its index in its line
   double kp_, shear_modulus_;
   const SupportSurface& support_;
   double direction_;  // ±1: the support moves in direction_ · y

@@ -29,7 +29,9 @@ struct TreadFrictionForm::PlanarPoint {
 
 namespace {
 // (ξ, η) of a point and their gradients as the rows of a 2 × 3 matrix.
-Eigen::Vector2d coordinates(const TravelCoordinate& xi, const TravelCoordinate& eta) { return {xi.value, eta.value}; }
+Eigen::Vector2d coordinates(const TravelCoordinate& xi, const TravelCoordinate& eta) {
+  return {xi.value, eta.value};
+}
 Eigen::Matrix<double, 2, 3> coordinate_gradients(const TravelCoordinate& xi, const TravelCoordinate& eta) {
   Eigen::Matrix<double, 2, 3> g;
   g.row(0) = xi.gradient.transpose();
@@ -153,7 +155,8 @@ int TreadFrictionForm::march_planar(int l, const FrictionPlan& plan, const Eigen
       o.shear = Eigen::Vector2d(slip_shear(q, g, pp.sign), 0.0);
       o.traction = Eigen::Vector2d(pp.sign * law_.friction * kp_ * g, 0.0);
       o.force = m * g * frame.col(0);
-      if (derivatives) o.d_force.middleCols<3>(column(i)) = m * (frame.col(0) * k.penetration.gradient.transpose() + g * dt);
+      if (derivatives)
+        o.d_force.middleCols<3>(column(i)) = m * (frame.col(0) * k.penetration.gradient.transpose() + g * dt);
       continue;
     }
 
@@ -212,8 +215,9 @@ int TreadFrictionForm::march_planar(int l, const FrictionPlan& plan, const Eigen
     o.force = m * g * frame * e;
     provided[i] = limit * e - rolling_radius_ * flow_angle(q) * along + coordinates(k.travel, k.lateral);
     if (derivatives) {
-      const Eigen::Matrix2d projector =
-          norm > 0.0 ? Eigen::Matrix2d((Eigen::Matrix2d::Identity() - e * e.transpose()) / norm) : Eigen::Matrix2d::Zero();
+      // ∂e = (I − e eᵀ) ∂s / |s|
+      Eigen::Matrix2d projector = Eigen::Matrix2d::Zero();
+      if (norm > 0.0) projector = (Eigen::Matrix2d::Identity() - e * e.transpose()) / norm;
       const Eigen::MatrixXd de = projector * ds;  // 2 × 3W
       o.d_force.noalias() = m * g * frame * de;
       o.d_force.middleCols<3>(column(i)) +=
@@ -264,8 +268,10 @@ void TreadFrictionForm::assemble_planar(const FormInput& input, SparseSystem& sy
   // columns of its own element), rows on its own element. Numbered in point order: deterministic sums.
   const int n = static_cast<int>(points_.size());
   std::vector<int> first_slot(n + 1, 0);
-  for (int q = 0; q < n; ++q)
-    first_slot[q + 1] = first_slot[q] + (deps[q].empty() ? 0 : input.with_tangent ? static_cast<int>(deps[q].size()) : 1);
+  for (int q = 0; q < n; ++q) {
+    const int slots = input.with_tangent ? static_cast<int>(deps[q].size()) : std::min<int>(1, deps[q].size());
+    first_slot[q + 1] = first_slot[q] + slots;
+  }
   BlockBatch& batch = system.batch(first_slot[n]);
   const int lines = static_cast<int>(lines_.size());
 #pragma omp parallel
@@ -291,7 +297,10 @@ void TreadFrictionForm::assemble_planar(const FormInput& input, SparseSystem& sy
           const int m = slot == 0 ? 12 : 24, column0 = slot == 0 ? 0 : 12;
           const std::array<int, 4>& pairs = mesh_.elements[d[slot]];
           for (int a = 0; a < 4; ++a)
-            for (int c = 0; c < 3; ++c) dofs[3 * a + c] = outer_dof(p.pairs[a], c), dofs[column0 + 3 * a + c] = outer_dof(pairs[a], c);
+            for (int c = 0; c < 3; ++c) {
+              dofs[3 * a + c] = outer_dof(p.pairs[a], c);
+              dofs[column0 + 3 * a + c] = outer_dof(pairs[a], c);
+            }
           f.setZero();
           if (slot == 0)
             for (int a = 0; a < 4; ++a) f.segment<3>(3 * a) = -p.shape[a] * o.force;
