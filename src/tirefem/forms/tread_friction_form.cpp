@@ -14,14 +14,6 @@ void append_outer_dofs(const std::array<int, 4>& pairs, std::vector<int>& dofs) 
 }
 }  // namespace
 
-// Position, travel coordinate and penetration of a tread point, the travel coordinate counted along the
-// support's motion (ξ_d = direction · ξ).
-struct TreadFrictionForm::PointKinematics {
-  Eigen::Vector3d position;
-  TravelCoordinate travel;
-  Penetration penetration;
-};
-
 TreadFrictionForm::TreadFrictionForm(const ShellMesh& mesh, std::vector<TreadPoint> points,
                                      double tread_stiffness, double shear_modulus, const SupportSurface& support,
                                      int support_direction, std::vector<char> window)
@@ -36,6 +28,9 @@ TreadFrictionForm::TreadFrictionForm(const ShellMesh& mesh, std::vector<TreadPoi
     std::sort(line.begin(), line.end(), [this](int a, int b) { return flow_angle(a) < flow_angle(b); });
     lines_.push_back(std::move(line));
   }
+  line_position_.assign(points_.size(), -1);
+  for (const auto& line : lines_)
+    for (int i = 0; i < static_cast<int>(line.size()); ++i) line_position_[line[i]] = i;
 }
 
 void TreadFrictionForm::add_pattern(PatternBuilder& pattern) const {
@@ -71,6 +66,7 @@ TreadFrictionForm::PointKinematics TreadFrictionForm::kinematics(int q, const Ei
   k.travel.value *= direction_;
   k.travel.gradient *= direction_;
   k.travel.hessian *= direction_;
+  if (planar_) k.lateral = support_.lateral(k.position, deflection_);
   k.penetration = support_.penetration(k.position, deflection_);
   return k;
 }
@@ -81,6 +77,7 @@ double TreadFrictionForm::slip_shear(int q, double penetration, double sign) con
 }
 
 FrictionPlan TreadFrictionForm::plan(const Eigen::VectorXd& u, const std::vector<char>& region) const {
+  if (planar_) return plan_planar(u, region);
   FrictionPlan plan(points_.size());
   for (const auto& line : lines_) {
     int previous_out = -1;
@@ -154,6 +151,7 @@ int TreadFrictionForm::contact_outside_window(const Eigen::VectorXd& u) const {
 }
 
 void TreadFrictionForm::assemble(const FormInput& input, SparseSystem& system) const {
+  if (planar_) return assemble_planar(input, system);
   const FrictionPlan fresh = frozen_.empty() ? plan(input.displacement) : FrictionPlan{};
   const FrictionPlan& plan = frozen_.empty() ? fresh : frozen_;
   const int n = static_cast<int>(points_.size());
@@ -253,6 +251,7 @@ void TreadFrictionForm::assemble(const FormInput& input, SparseSystem& system) c
 }
 
 std::vector<TreadTraction> TreadFrictionForm::evaluate(const Eigen::VectorXd& u) const {
+  if (planar_) return evaluate_planar(u);
   const FrictionPlan plan = frozen_.empty() ? this->plan(u) : frozen_;
   std::vector<TreadTraction> out(points_.size());
   for (int q = 0; q < static_cast<int>(points_.size()); ++q) {
@@ -274,6 +273,8 @@ std::vector<TreadTraction> TreadFrictionForm::evaluate(const Eigen::VectorXd& u)
                  (k.travel.value - wa * ka.travel.value - wb * kb.travel.value);
     }
     tr.traction = shear_modulus_ * tr.shear / p.height;
+    tr.shear_vector = Eigen::Vector2d(tr.shear, 0.0);
+    tr.traction_vector = Eigen::Vector2d(tr.traction, 0.0);
     tr.force = tr.traction * p.weight * k.travel.gradient.normalized();
   }
   return out;

@@ -21,6 +21,15 @@
 // The stick / slip / out status of the points and the anchors form a plan. A frozen plan (the outer loop
 // of the two-level iteration, with the Winkler form's region frozen alike) makes the residual smooth in
 // u; released, the plan follows the iterate (single loop).
+//
+// Planar mode (MODEL.md §7, slip angle; set_planar): the shear is a 2-vector with components along
+// t = ∇ξ/|∇ξ| and b = ∇η/|∇η| (η the support's lateral coordinate), and the support also drifts by d along
+// +η per unit of travel along ξ (set_lateral_drift):
+//     s = s_A + Rk (ψ − ψ_A) (1, d) − (ξ − ξ_A, η − η_A),
+// stick where (G/hp)|s| ≤ μ kp g, else slip with the traction μ kp g s/|s| (isotropic Coulomb) and the
+// shear (μ kp g hp/G) s/|s|. A slip point's trial shear is measured from its own anchor, so the tangent of
+// a slip point or of a point re-sticking behind it chains upstream along the line to the patch entry
+// (tread_friction_planar.cpp). Off (the default), the form is the paper's 1D model above, unchanged.
 #include <vector>
 
 #include "tirefem/forms/winkler_contact_form.hpp"
@@ -42,7 +51,8 @@ struct FrictionPlanPoint {
   int anchor_a = -1, anchor_b = -1;  // stick: ψ_A, ξ_A = (1 − w)·(point a) + w·(point b)
   double anchor_weight = 0.0;
   bool anchored_on_slip = false;     // stick after slip: a = b = the last sliding point
-  double sign = 0.0;                 // slip: σ
+  double sign = 0.0;                 // slip: σ (planar: the sign of the trial shear's t-component)
+  // Planar mode: a Coulomb slip point's anchor fields are set too (its trial shear is measured from it).
 };
 using FrictionPlan = std::vector<FrictionPlanPoint>;
 
@@ -51,6 +61,9 @@ struct TreadTraction {
   TreadContact status = TreadContact::out;
   double shear = 0.0;     // s: tip minus base along the support's motion, mm
   double traction = 0.0;  // qt: tangential stress on the tyre along the support's motion, MPa
+  // Components along (t, b) (planar mode; 1D: (shear, 0) and (traction, 0)).
+  Eigen::Vector2d shear_vector = Eigen::Vector2d::Zero();     // mm
+  Eigen::Vector2d traction_vector = Eigen::Vector2d::Zero();  // MPa
   Eigen::Vector3d force = Eigen::Vector3d::Zero();  // tangential force on the tyre, N
 };
 
@@ -72,6 +85,13 @@ class TreadFrictionForm final : public Form {
   double rolling_radius() const { return rolling_radius_; }
   void set_law(const FrictionLaw& law) { law_ = law; }
   const FrictionLaw& law() const { return law_; }
+  // Planar (2D) tread shear (MODEL.md §7); false: the paper's 1D model. Changing it invalidates a frozen
+  // plan (a planar plan records the anchors of slip points too): freeze a plan made in the same mode.
+  void set_planar(bool planar) { planar_ = planar; }
+  bool planar() const { return planar_; }
+  // d: the support's displacement along +η per unit of its travel along ξ (planar mode only).
+  void set_lateral_drift(double drift) { drift_ = drift; }
+  double lateral_drift() const { return drift_; }
 
   // The plan at u for a contact region (per point; empty: {g > 0} at u), by marching along each line
   // in the direction of the flow with the return mapping of eq. (15).
@@ -89,14 +109,35 @@ class TreadFrictionForm final : public Form {
   const std::vector<std::vector<int>>& lines() const { return lines_; }
 
  private:
-  struct PointKinematics;
+  // Position, travel coordinate, lateral coordinate (planar mode) and penetration of a tread point, the
+  // travel coordinate counted along the support's motion (ξ_d = direction · ξ).
+  struct PointKinematics {
+    Eigen::Vector3d position;
+    TravelCoordinate travel;
+    TravelCoordinate lateral;
+    Penetration penetration;
+  };
+  struct PlanarPoint;
   PointKinematics kinematics(int point, const Eigen::VectorXd& u) const;
   double flow_angle(int point) const { return direction_ * points_[point].v; }
   double slip_shear(int point, double penetration, double sign) const;
 
+  // Planar mode (tread_friction_planar.cpp).
+  FrictionPlan plan_planar(const Eigen::VectorXd& u, const std::vector<char>& region) const;
+  void assemble_planar(const FormInput& input, SparseSystem& system) const;
+  std::vector<TreadTraction> evaluate_planar(const Eigen::VectorXd& u) const;
+  // Marches along line `l` with `plan`; fills per point of the line (in line order) its traction and,
+  // with `derivatives`, the derivative of its force on the tyre w.r.t. the positions of the line's points
+  // first, ..., first + W − 1 (3 × 3W), `first` returned. `released`: the entry weights follow u.
+  int march_planar(int l, const FrictionPlan& plan, const Eigen::VectorXd& u, bool released, bool derivatives,
+                   std::vector<PlanarPoint>& out) const;
+  // Elements whose DOFs a point's planar force depends on (its own first), per point (empty: out).
+  std::vector<std::vector<int>> planar_dependencies(const FrictionPlan& plan) const;
+
   const ShellMesh& mesh_;
   std::vector<TreadPoint> points_;
   std::vector<std::vector<int>> lines_;
+  std::vector<int> line_position_;  // per point: its index in its line
   double kp_, shear_modulus_;
   const SupportSurface& support_;
   double direction_;  // ±1: the support moves in direction_ · y
@@ -105,6 +146,8 @@ class TreadFrictionForm final : public Form {
   double rolling_radius_ = 0.0;
   FrictionLaw law_;
   FrictionPlan frozen_;
+  bool planar_ = false;
+  double drift_ = 0.0;
 };
 
 }  // namespace tirefem

@@ -14,6 +14,13 @@ TravelCoordinate SupportSurface::travel(const Eigen::Vector3d& x, double) const 
   return t;
 }
 
+TravelCoordinate SupportSurface::lateral(const Eigen::Vector3d& x, double) const {
+  TravelCoordinate t;
+  t.value = x.x();
+  t.gradient = Eigen::Vector3d::UnitX();
+  return t;
+}
+
 Penetration RoadPlane::penetration(const Eigen::Vector3d& x, double deflection) const {
   Penetration p;
   p.value = deflection - x.z();

@@ -37,6 +37,10 @@ class SupportSurface {
   virtual Penetration penetration(const Eigen::Vector3d& x, double deflection) const = 0;
   // Travel coordinate of x (the road translates in y, the drum turns about its axis).
   virtual TravelCoordinate travel(const Eigen::Vector3d& x, double deflection) const;
+  // Lateral coordinate η of x (MODEL.md §7): across the support's motion in the support surface, so that
+  // (ξ, η) are coordinates on it. Default η = x (gradient e_x, Hessian 0): right for the plane, the drum
+  // (axis parallel to x) and the translating road; an inclined (cambered) road overrides it.
+  virtual TravelCoordinate lateral(const Eigen::Vector3d& x, double deflection) const;
   // Height of the support surface above (x, y) (for drawing it), with the same deflection.
   virtual double height(double x, double y, double deflection) const = 0;
 };
