@@ -6,8 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "tirefem/forms/pressure_form.hpp"
-#include "tirefem/forms/shell_internal_force.hpp"
+#include "tirefem/analysis/rolling_model.hpp"
 
 namespace tirefem {
 
@@ -15,234 +14,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
-// Points that may touch the support while rolling: the static patch's angular extent along the flow,
-// widened by 30% of its length and two elements on each side (the patch moves and grows little).
-std::vector<char> friction_window(const ShellMesh& mesh, const std::vector<TreadPoint>& points,
-                                  const std::vector<TreadPointState>& states) {
-  double lo = 1e300, hi = -1e300;
-  for (std::size_t q = 0; q < points.size(); ++q)
-    if (states[q].pressure > 0) lo = std::min(lo, points[q].v), hi = std::max(hi, points[q].v);
-  double element_angle = 0.0;
-  for (int j = 0; j + 1 < static_cast<int>(mesh.v_values.size()); ++j)
-    if (mesh.v_values[j] <= 0.0 && mesh.v_values[j + 1] >= 0.0) element_angle = mesh.v_values[j + 1] - mesh.v_values[j];
-  const double margin = 0.3 * (hi - lo) + 2.0 * element_angle;
-  std::vector<char> window(points.size());
-  for (std::size_t q = 0; q < points.size(); ++q) window[q] = points[q].v >= lo - margin && points[q].v <= hi + margin;
-  return window;
-}
-
-// The inflated, statically loaded tyre with the tread's friction: forms, the Newton solver (LU) and the
-// converged rolling states for predictions.
-class RollingModel {
- public:
-  RollingModel(const TyreMesh& tm, const TyreDescription& tyre, const InflationSettings& inflation,
-               const ContactSettings& settings, const RollingStudy& study, RollingResult& result)
-      : tm_(tm), settings_(settings), result_(result), support_(make_support(study.support)) {
-    const StaticContactResult& fp = result.footprint;
-    DofMap dofs(tm.mesh.dof_count());
-    dofs.fix(tm.fixed_dofs);
-    std::vector<std::unique_ptr<Form>> forms;
-    forms.push_back(std::make_unique<ShellInternalForce>(tm.mesh, tm.sections, Kinematics::nonlinear));
-    forms.push_back(std::make_unique<PressureForm>(tm.mesh, tm.pressure_elements, inflation.pressure,
-                                                   Kinematics::nonlinear, /*symmetrize=*/false));
-    auto contact = std::make_unique<WinklerContactForm>(tm.mesh, fp.tread_points, tyre.tread_stiffness, *support_);
-    contact_ = contact.get();
-    forms.push_back(std::move(contact));
-    // The vehicle travels in +y: the support moves in −y under the tyre (reversed: +y).
-    auto friction = std::make_unique<TreadFrictionForm>(
-        tm.mesh, contact_->points(), tyre.tread_stiffness, tyre.tread_shear_modulus, *support_,
-        study.reverse ? 1 : -1, friction_window(tm.mesh, contact_->points(), fp.final_state.tread));
-    friction_ = friction.get();
-    forms.push_back(std::move(friction));
-    problem_ = std::make_unique<NonlinearProblem>(std::move(dofs), std::move(forms));
-    problem_->load_scale();  // inflation load, before the support is raised (as in the static run)
-    NewtonSettings ns;
-    ns.max_iterations = settings.max_newton_iterations;
-    ns.residual_tolerance = settings.residual_tolerance;
-    // An unsymmetric LU costs about twice a Cholesky: reuse it as GMRES preconditioner while that
-    // converges fast (the tangent changes little between iterations and neighbouring states).
-    ns.reuse_factorization = true;
-    // GMRES gives up after 25 iterations (then a fresh LU); measured on the 15-point sweep before the
-    // refresh after 8 (NewtonSettings): 12 → 28 LUs, 41 s; 25 → 4 LUs, 31 s; 40 → 65 s.
-    ns.max_krylov_iterations = 25;
-    newton_ = std::make_unique<NewtonSolver>(*problem_, ns);
-    set_deflection(fp.final_state.deflection_mm);
-    base_ = fp.final_state.displacement;
-    result.tread_points = contact_->points();
-  }
-
-  struct Solved {
-    bool converged = false;
-    std::string failure;
-    RollingFigures figures;
-    RollingSolveCounts counts;
-    Eigen::VectorXd u;
-  };
-
-  // Solves with the given law at Rk. Coulomb and full stick: from the nearest converged Coulomb state
-  // (predicted), with halving continuation in 1/Rk from it when a solve fails. Full slip: from the static
-  // footprint (μ = 0 of this law), continued in μ with a secant predictor; the whole friction force at
-  // once is tried first.
-  Solved solve(const FrictionLaw& law, double rolling_radius) {
-    const auto t0 = Clock::now();
-    const int factorizations0 = newton_->linear_stats().factorizations;
-    const int newton0 = newton_->total_iterations();
-    Solved s;
-    const bool full_slip = law.mode == FrictionLaw::Mode::full_slip;
-    const double target = 1.0 / rolling_radius;
-    const Known* from = full_slip ? nullptr : nearest(target);
-    double done = 0.0, step = 1.0;  // continuation parameter from the start state (0) to the target (1)
-    Eigen::VectorXd u = from ? from->u : base_;
-    Eigen::VectorXd previous_u = u;  // full slip: the converged stage before u, at previous_t
-    double previous_t = 0.0;
-    const double p0 = from ? from->inverse_radius : target;
-    int cutbacks = 0;
-    ContactSolveOutcome last;
-    while (done < 1.0) {
-      const double t = std::min(1.0, done + step);
-      FrictionLaw stage = law;
-      double p = target;
-      if (full_slip) stage.friction = law.friction * t;
-      else p = p0 + t * (target - p0);
-      friction_->set_law(stage);
-      friction_->set_rolling_radius(1.0 / p);
-      Eigen::VectorXd trial = u;
-      if (law.mode == FrictionLaw::Mode::coulomb) trial = predict(p, u);
-      else if (full_slip && done > previous_t) trial += (t - done) / (done - previous_t) * (u - previous_u);
-      last = solve_rolling_state(*newton_, *contact_, *friction_, trial, settings_);
-      ++s.counts.solves;
-      if (last.converged && friction_->contact_outside_window(trial) > 0) {
-        last.converged = false;
-        last.failure = "the contact patch grew beyond the friction window";
-        cutbacks = 6;  // not a convergence problem: do not cut back
-      }
-      if (!last.converged) {
-        if (++cutbacks > 5) {
-          s.failure = last.failure;
-          break;
-        }
-        step *= 0.5;
-        continue;
-      }
-      previous_u = std::move(u);
-      previous_t = done;
-      u = std::move(trial);
-      done = t;
-      if (law.mode == FrictionLaw::Mode::coulomb) known_.push_back({p, u});
-    }
-    s.converged = done >= 1.0;
-    s.counts.contact_iterations = last.contact_iterations;
-    s.counts.newton_iterations = newton_->total_iterations() - newton0;
-    s.counts.factorizations = newton_->linear_stats().factorizations - factorizations0;
-    s.counts.time_s = seconds_since(t0);
-    if (s.converged) {
-      s.figures = figures(u);
-      s.u = std::move(u);
-    }
-    return s;
-  }
-
-  // Holds Qz at `target` by moving the support (δz): secant steps from the static vertical stiffness,
-  // each a rolling solve from the last state, until |Qz − target| ≤ tolerance · target. Leaves the model
-  // at the new deflection.
-  void hold_load(Solved& s, double target, double tolerance, double stiffness) {
-    const auto t0 = Clock::now();
-    const int factorizations0 = newton_->linear_stats().factorizations;
-    const int newton0 = newton_->total_iterations();
-    double d0 = deflection_, q0 = s.figures.Qz_N, slope = stiffness;
-    for (int it = 0; it < 8 && s.converged && std::abs(q0 - target) > tolerance * target; ++it) {
-      const double d1 = d0 + (target - q0) / slope;
-      set_deflection(d1);
-      Eigen::VectorXd u = s.u;
-      const ContactSolveOutcome o = solve_rolling_state(*newton_, *contact_, *friction_, u, settings_);
-      ++s.counts.solves;
-      if (!o.converged) {
-        s.converged = false;
-        s.failure = "holding Qz: " + o.failure;
-        break;
-      }
-      s.u = std::move(u);
-      s.figures = figures(s.u);
-      if (s.figures.Qz_N != q0) slope = (s.figures.Qz_N - q0) / (d1 - d0);
-      d0 = d1, q0 = s.figures.Qz_N;
-    }
-    if (s.converged && std::abs(q0 - target) > tolerance * target) {
-      s.converged = false;
-      s.failure = fmt::format("Qz = {} N not held within 8 deflection steps (Qz {:.1f} N)", target, q0);
-    }
-    s.counts.newton_iterations += newton_->total_iterations() - newton0;
-    s.counts.factorizations += newton_->linear_stats().factorizations - factorizations0;
-    s.counts.time_s += seconds_since(t0);
-  }
-  void set_deflection(double deflection) {
-    deflection_ = deflection;
-    contact_->set_deflection(deflection);
-    friction_->set_deflection(deflection);
-  }
-  double deflection() const { return deflection_; }
-
-  RollingFigures figures(const Eigen::VectorXd& u) const {
-    return rolling_figures(contact_->points(), contact_->evaluate(u), friction_->evaluate(u), tm_.axis_z,
-                           tm_.half_model, result_.reverse, wheel_frame(*support_, deflection_, result_.reverse));
-  }
-  // Qy of a full-stick plan at the static state for Rk (no solve): affine in Rk, it estimates Re.
-  double static_full_stick_Qy(double rolling_radius) {
-    FrictionLaw law;
-    law.mode = FrictionLaw::Mode::full_stick;
-    friction_->set_law(law);
-    friction_->set_rolling_radius(rolling_radius);
-    return figures(base_).Qy_N;
-  }
-  void fill(RollingStateResult& state, const Solved& s) {
-    state.converged = s.converged;
-    state.failure = s.failure;
-    state.figures = s.figures;
-    state.counts = s.counts;
-    if (!s.converged) return;
-    state.displacement = s.u;
-    state.normal = contact_->evaluate(s.u);
-    state.tangential = friction_->evaluate(s.u);
-  }
-  void finish(SolveCounters& c) const { add_counters(c, *newton_, *problem_); }
-
- private:
-  struct Known {
-    double inverse_radius;
-    Eigen::VectorXd u;
-  };
-  const Known* nearest(double p, const Known* other = nullptr) const {
-    const Known* best = nullptr;
-    for (const Known& k : known_)
-      if (&k != other && (!other || std::abs(k.inverse_radius - other->inverse_radius) > 1e-15) &&
-          (!best || std::abs(k.inverse_radius - p) < std::abs(best->inverse_radius - p)))
-        best = &k;
-    return best;
-  }
-  // Secant in 1/Rk (linear in κ) through the two nearest converged states, when the target is within
-  // twice their spacing (extrapolating further from two close states, e.g. the free-rolling iterates,
-  // amplifies their difference); else the start.
-  Eigen::VectorXd predict(double p, const Eigen::VectorXd& start) const {
-    const Known* a = nearest(p);
-    const Known* b = a ? nearest(p, a) : nullptr;
-    if (!a || !b) return start;
-    const double t = (p - a->inverse_radius) / (b->inverse_radius - a->inverse_radius);
-    if (std::abs(t) > 2.0) return start;
-    return a->u + t * (b->u - a->u);
-  }
-
-  const TyreMesh& tm_;
-  ContactSettings settings_;
-  RollingResult& result_;
-  std::unique_ptr<SupportSurface> support_;
-  WinklerContactForm* contact_ = nullptr;
-  TreadFrictionForm* friction_ = nullptr;
-  std::unique_ptr<NonlinearProblem> problem_;
-  std::unique_ptr<NewtonSolver> newton_;
-  Eigen::VectorXd base_;  // the static footprint
-  double deflection_ = 0.0;
-  std::vector<Known> known_;
-};
 
 const char* kind_name(RollingStateSpec::Kind k) {
   switch (k) {
@@ -255,9 +26,46 @@ const char* kind_name(RollingStateSpec::Kind k) {
   return "?";
 }
 
-// Free rolling: secant iteration on Rk for Qy = 0 (|Qy| ≤ 1e-4 Qz), started from the rigid-tread estimate
-// of the static state. Returns the state; sets Re and the slip stiffness dQy/dκ (least squares over the
-// iterates within |κ| ≤ 0.003, else the last secant) in the result.
+constexpr double kDegree = 3.14159265358979323846 / 180.0;
+
+// Secant iteration on Rk for Qy = 0 (|Qy| ≤ 1e-4 Qz) at the given slip angle and camber, from `rk` with
+// the first slope dQy/dRk `slope`. `tried` receives every converged (Rk, Qy).
+RollingModel::Solved secant_free_rolling(RollingModel& model, const FrictionLaw& law, WheelSlip slip, double slope,
+                                         std::vector<std::pair<double, double>>& tried, RollingSolveCounts& total,
+                                         const ProgressSink& progress) {
+  RollingModel::Solved s;
+  for (int it = 0; it < 15; ++it) {
+    s = model.solve(law, slip);
+    total.newton_iterations += s.counts.newton_iterations;
+    total.factorizations += s.counts.factorizations;
+    total.solves += s.counts.solves;
+    total.time_s += s.counts.time_s;
+    total.contact_iterations = s.counts.contact_iterations;
+    if (!s.converged) break;
+    tried.emplace_back(slip.rolling_radius, s.figures.Qy_N);
+    if (progress)
+      progress(fmt::format("  free rolling{}: Rk {:.4f} mm → Qy {:+.2f} N",
+                           slip.slip_angle != 0.0 || slip.camber != 0.0
+                               ? fmt::format(" at α {:g}°, γ {:g}°", slip.slip_angle / kDegree, slip.camber / kDegree)
+                               : "",
+                           slip.rolling_radius, s.figures.Qy_N));
+    if (std::abs(s.figures.Qy_N) <= 1e-4 * std::abs(s.figures.Qz_N)) return s;
+    if (tried.size() >= 2) {
+      const auto& [r0, q0] = tried[tried.size() - 2];
+      if (q0 != s.figures.Qy_N) slope = (s.figures.Qy_N - q0) / (slip.rolling_radius - r0);
+    }
+    slip.rolling_radius -= s.figures.Qy_N / slope;
+  }
+  if (s.converged) {
+    s.converged = false;
+    s.failure = "the free-rolling radius was not found in 15 secant steps";
+  }
+  return s;
+}
+
+// Free rolling straight ahead (α = γ = 0), started from the rigid-tread estimate of the static state.
+// Returns the state; sets Re and the slip stiffness dQy/dκ (least squares over the iterates within
+// |κ| ≤ 0.003, else the last secant) in the result.
 RollingStateResult free_rolling(RollingModel& model, const RollingStudy& study, RollingResult& result,
                                 const ProgressSink& progress) {
   RollingStateResult state;
@@ -267,48 +75,121 @@ RollingStateResult free_rolling(RollingModel& model, const RollingStudy& study, 
   law.friction = study.friction;
   const double a = result.loaded_radius_mm, b = result.axle_z;
   const double qa = model.static_full_stick_Qy(a), qb = model.static_full_stick_Qy(b);
-  double rk = qa != qb ? a - qa * (b - a) / (qb - qa) : 0.5 * (a + b);
+  const double rk = qa != qb ? a - qa * (b - a) / (qb - qa) : 0.5 * (a + b);
   std::vector<std::pair<double, double>> tried;  // (Rk, Qy)
-  RollingModel::Solved s;
   RollingSolveCounts total;
-  double slope = (qb - qa) / (b - a);
-  for (int it = 0; it < 15; ++it) {
-    s = model.solve(law, rk);
-    total.newton_iterations += s.counts.newton_iterations;
-    total.factorizations += s.counts.factorizations;
-    total.solves += s.counts.solves;
-    total.time_s += s.counts.time_s;
-    total.contact_iterations = s.counts.contact_iterations;
-    if (!s.converged) break;
-    tried.emplace_back(rk, s.figures.Qy_N);
-    if (progress)
-      progress(fmt::format("  free rolling: Rk {:.4f} mm → Qy {:+.2f} N", rk, s.figures.Qy_N));
-    if (std::abs(s.figures.Qy_N) <= 1e-4 * std::abs(s.figures.Qz_N)) break;
-    if (tried.size() >= 2) {
-      const auto& [r0, q0] = tried[tried.size() - 2];
-      if (q0 != s.figures.Qy_N) slope = (s.figures.Qy_N - q0) / (rk - r0);
-    }
-    rk -= s.figures.Qy_N / slope;
-  }
+  RollingModel::Solved s = secant_free_rolling(model, law, {rk, 0.0, 0.0}, (qb - qa) / (b - a), tried, total, progress);
   s.counts = total;
   model.fill(state, s);
-  if (!state.converged || std::abs(s.figures.Qy_N) > 1e-4 * std::abs(s.figures.Qz_N)) {
-    state.converged = false;
-    if (state.failure.empty()) state.failure = "the free-rolling radius was not found in 15 secant steps";
-    return state;
-  }
-  const double re = rk;
+  if (!state.converged) return state;
+  const double re = tried.back().first;
   result.effective_rolling_radius_mm = re;
   state.rolling_radius_mm = re;
   state.slip = 0.0;
   // dQy/dκ = dQy/dRk · dRk/dκ, dRk/dκ = −Re at κ = 0.
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  double sx = 0, sy = 0, sxx = 0, sxy = 0, slope = 0.0;
   int n = 0;
   for (const auto& [r, q] : tried)
     if (std::abs(re / r - 1.0) <= 0.003) sx += r, sy += q, sxx += r * r, sxy += r * q, ++n;
   if (n >= 2 && n * sxx - sx * sx > 0) slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  else if (tried.size() >= 2) slope = (tried.back().second - tried[tried.size() - 2].second) /
+                                      (tried.back().first - tried[tried.size() - 2].first);
+  else slope = (qb - qa) / (b - a);
   result.slip_stiffness_N = -re * slope;
   return state;
+}
+
+std::string angles_label(double alpha_deg, double gamma_deg) {
+  std::string s;
+  if (alpha_deg != 0.0) s += fmt::format(", α {:+g}°", alpha_deg);
+  if (gamma_deg != 0.0) s += fmt::format(", γ {:+g}°", gamma_deg);
+  return s;
+}
+
+// Vertical stiffness dQz/dδz of the last two static load points: the first step when holding Qz.
+double static_vertical_stiffness(const RollingResult& r) {
+  const auto& lp = r.footprint.points;
+  return lp.size() >= 2 ? (lp.back().patch.Qz_N - lp[lp.size() - 2].patch.Qz_N) /
+                              (lp.back().deflection_mm - lp[lp.size() - 2].deflection_mm)
+                        : lp.back().patch.Qz_N / r.deflection_mm;
+}
+
+// Solves the points of a sweep in the given order (each continuing from the nearest converged state),
+// from the footprint's deflection at the start of each branch; a branch stops at its first failure (the
+// rest would start from further away).
+struct SweepTarget {
+  double slip = 0.0, alpha_deg = 0.0, gamma_deg = 0.0;
+  bool new_branch = false;
+};
+bool run_sweep(RollingModel& model, const RollingStudy& study, RollingResult& r, const std::vector<SweepTarget>& targets,
+               bool hold, std::vector<SweepPoint>& out, const std::string& what, const ProgressSink& progress) {
+  FrictionLaw law;
+  law.friction = study.friction;
+  const double re = *r.effective_rolling_radius_mm, stiffness = static_vertical_stiffness(r);
+  bool ok = true, skip = false;
+  for (const SweepTarget& t : targets) {
+    if (t.new_branch) model.set_deflection(r.deflection_mm), skip = false;
+    if (skip) continue;
+    const double rk = re / (1.0 + t.slip);
+    RollingModel::Solved s = model.solve(law, {rk, t.alpha_deg * kDegree, t.gamma_deg * kDegree});
+    if (hold && s.converged) model.hold_load(s, study.target_load, study.load_tolerance, stiffness);
+    const std::string label = fmt::format("{} κ {:+.4f}{}", what, t.slip, angles_label(t.alpha_deg, t.gamma_deg));
+    if (!s.converged) {
+      ok = false, skip = true;
+      if (r.failure.empty()) r.failure = fmt::format("{}: {}", label, s.failure);
+      if (progress) progress(fmt::format("  {}: did not converge: {}", label, s.failure));
+      continue;
+    }
+    out.push_back({t.slip, t.alpha_deg, t.gamma_deg, rk, model.deflection(), s.figures, s.counts});
+    if (progress)
+      progress(fmt::format("  {}: Fx {:+8.1f} N, Fy {:+8.1f} N, Mz {:+9.0f} N·mm, Qz {:.1f} N, stick {:3.0f}% ({} "
+                           "Newton iterations, {:.2f} s)",
+                           label, s.figures.Fx_N, s.figures.Fy_N, s.figures.aligning_moment_Nmm, s.figures.Qz_N,
+                           100 * s.figures.stick_area_fraction, s.counts.newton_iterations, s.counts.time_s));
+  }
+  return ok;
+}
+
+// From 0 outwards on each side (`values` in any order), each side a branch.
+template <class Make>
+std::vector<SweepTarget> outward(std::vector<double> values, Make make) {
+  std::vector<double> up, down;
+  for (double v : values) (v >= 0 ? up : down).push_back(v);
+  std::sort(up.begin(), up.end());
+  std::sort(down.rbegin(), down.rend());
+  std::vector<SweepTarget> targets;
+  for (const auto* side : {&up, &down})
+    for (std::size_t i = 0; i < side->size(); ++i) {
+      SweepTarget t = make((*side)[i]);
+      t.new_branch = i == 0;
+      targets.push_back(t);
+    }
+  return targets;
+}
+
+// dFy/dα at 0 and the trail there: least squares through the sweep points with |α| ≤ 1.01° (at least two),
+// else the two points nearest 0.
+void cornering_stiffness(RollingResult& r) {
+  std::vector<const SweepPoint*> near;
+  for (const SweepPoint& p : r.angle_sweep)
+    if (std::abs(p.slip_angle_deg) <= 1.01) near.push_back(&p);
+  if (near.size() < 2) {
+    near.clear();
+    for (const SweepPoint& p : r.angle_sweep) near.push_back(&p);
+    std::sort(near.begin(), near.end(), [](auto* a, auto* b) { return std::abs(a->slip_angle_deg) < std::abs(b->slip_angle_deg); });
+    if (near.size() > 2) near.resize(2);
+  }
+  if (near.size() < 2) return;
+  double sx = 0, sy = 0, sxx = 0, sxy = 0, sm = 0;
+  for (const SweepPoint* p : near)
+    sx += p->slip_angle_deg, sy += p->figures.Fy_N, sxx += p->slip_angle_deg * p->slip_angle_deg,
+        sxy += p->slip_angle_deg * p->figures.Fy_N, sm += p->slip_angle_deg * p->figures.aligning_moment_Nmm;
+  const double n = static_cast<double>(near.size()), det = n * sxx - sx * sx;
+  if (!(det > 0)) return;
+  const double slope = (n * sxy - sx * sy) / det;
+  r.cornering_stiffness_N_per_deg = slope;
+  // Mz ≈ −t · Fy near 0: the trail from the moments' and forces' first moments in α.
+  if (sxy != 0.0) r.pneumatic_trail_at_zero_mm = -sm / sxy;
 }
 
 }  // namespace
@@ -368,7 +249,8 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
     RollingStateResult state;
     state.spec = spec;
     state.name = spec.name.empty() ? kind_name(spec.kind) : spec.name;
-    if (spec.kind == RollingStateSpec::Kind::free) {
+    const bool cornering = spec.slip_angle_deg != 0.0 || spec.camber_deg != 0.0;
+    if (spec.kind == RollingStateSpec::Kind::free && !cornering) {
       const std::string name = state.name;
       state = free;
       state.spec = spec;
@@ -390,7 +272,18 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
         break;
       default: break;
     }
-    const RollingModel::Solved s = model.solve(law, rk);
+    const WheelSlip slip{rk, spec.slip_angle_deg * kDegree, spec.camber_deg * kDegree};
+    RollingModel::Solved s;
+    if (spec.kind == RollingStateSpec::Kind::free) {
+      // Free rolling at a slip angle or camber: Fx = 0 there, from Re with the straight-ahead slope.
+      std::vector<std::pair<double, double>> tried;
+      RollingSolveCounts total;
+      s = secant_free_rolling(model, law, slip, -r.slip_stiffness_N.value_or(1e5) / re, tried, total, progress);
+      s.counts = total;
+      if (!tried.empty()) rk = tried.back().first;
+    } else {
+      s = model.solve(law, slip);
+    }
     model.fill(state, s);
     if (spec.kind == RollingStateSpec::Kind::full_slip) {
       if (spec.braking) state.slip = -1.0;
@@ -400,9 +293,12 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
     }
     if (progress) {
       if (s.converged)
-        progress(fmt::format("  {}: Qy {:+.1f} N, Qz {:.1f} N, Mx {:+.0f} N·mm, stick {:.0f}% ({} Newton "
+        progress(fmt::format("  {}: Qy {:+.1f} N, Qz {:.1f} N, Mx {:+.0f} N·mm{}, stick {:.0f}% ({} Newton "
                              "iterations, {} factorisations, {:.2f} s)",
                              state.name, s.figures.Qy_N, s.figures.Qz_N, s.figures.Mx_Nmm,
+                             cornering ? fmt::format(", Fy {:+.1f} N, Mz {:+.0f} N·mm", s.figures.Fy_N,
+                                                     s.figures.aligning_moment_Nmm)
+                                       : "",
                              100 * s.figures.stick_area_fraction, s.counts.newton_iterations,
                              s.counts.factorizations, s.counts.time_s));
       else
@@ -415,41 +311,34 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
     r.states.push_back(std::move(state));
   }
   if (study.sweep) {
-    // From free rolling outwards on each side, each point continuing from its neighbour.
     const SlipSweep& sw = *study.sweep;
     std::vector<double> slips;
     for (int i = 0; i < sw.points; ++i) slips.push_back(sw.from + (sw.to - sw.from) * i / (sw.points - 1));
-    std::vector<double> up, down;
-    for (double k : slips) (k >= 0 ? up : down).push_back(k);
-    std::reverse(down.begin(), down.end());
-    FrictionLaw law;
-    law.friction = study.friction;
-    // Vertical stiffness dQz/dδz of the last two static load points: the first step when holding Qz.
-    const auto& lp = r.footprint.points;
-    const double stiffness = lp.size() >= 2 ? (lp.back().patch.Qz_N - lp[lp.size() - 2].patch.Qz_N) /
-                                                  (lp.back().deflection_mm - lp[lp.size() - 2].deflection_mm)
-                                            : r.footprint.points.back().patch.Qz_N / r.deflection_mm;
-    for (const auto* side : {&up, &down}) {
-      model.set_deflection(r.deflection_mm);  // each side starts from free rolling
-      for (double k : *side) {
-        const double rk = re / (1.0 + k);
-        RollingModel::Solved s = model.solve(law, rk);
-        if (sw.hold_load && s.converged)
-          model.hold_load(s, study.target_load, study.load_tolerance, stiffness);
-        if (!s.converged) {
-          ok = false;
-          if (r.failure.empty()) r.failure = fmt::format("slip sweep at κ = {:g}: {}", k, s.failure);
-          if (progress) progress(fmt::format("  sweep κ {:+.4f}: did not converge: {}", k, s.failure));
-          break;  // the rest of this side would start from further away
-        }
-        r.sweep.push_back({k, rk, model.deflection(), s.figures, s.counts});
-        if (progress)
-          progress(fmt::format("  sweep κ {:+.4f}: Qy {:+8.1f} N, Qz {:.1f} N, stick {:3.0f}% ({} Newton "
-                               "iterations, {:.2f} s)", k, s.figures.Qy_N, s.figures.Qz_N,
-                               100 * s.figures.stick_area_fraction, s.counts.newton_iterations, s.counts.time_s));
-      }
-    }
+    const auto targets = outward(slips, [](double k) { return SweepTarget{k, 0.0, 0.0}; });
+    ok = run_sweep(model, study, r, targets, sw.hold_load, r.sweep, "sweep", progress) && ok;
     std::sort(r.sweep.begin(), r.sweep.end(), [](const SweepPoint& a, const SweepPoint& b) { return a.slip < b.slip; });
+  }
+  if (study.angle_sweep) {
+    const SlipAngleSweep& sw = *study.angle_sweep;
+    std::vector<double> angles;
+    for (int i = 0; i < sw.points; ++i) angles.push_back(sw.from + (sw.to - sw.from) * i / (sw.points - 1));
+    const auto targets = outward(angles, [&](double a) { return SweepTarget{sw.slip, a, sw.camber_deg}; });
+    ok = run_sweep(model, study, r, targets, sw.hold_load, r.angle_sweep, "α sweep", progress) && ok;
+    std::sort(r.angle_sweep.begin(), r.angle_sweep.end(),
+              [](const SweepPoint& a, const SweepPoint& b) { return a.slip_angle_deg < b.slip_angle_deg; });
+    cornering_stiffness(r);
+  }
+  if (study.combined) {
+    // Each slip κ a branch outwards in α from the point nearest α = 0.
+    std::vector<SweepTarget> targets;
+    for (double k : study.combined->slips) {
+      const auto line = outward(study.combined->slip_angles_deg, [k](double a) { return SweepTarget{k, a, 0.0}; });
+      targets.insert(targets.end(), line.begin(), line.end());
+    }
+    ok = run_sweep(model, study, r, targets, study.combined->hold_load, r.combined, "combined", progress) && ok;
+    std::sort(r.combined.begin(), r.combined.end(), [](const SweepPoint& a, const SweepPoint& b) {
+      return a.slip != b.slip ? a.slip < b.slip : a.slip_angle_deg < b.slip_angle_deg;
+    });
   }
   r.completed = ok;
   model.finish(r.counters);

@@ -83,6 +83,8 @@ struct RollingStateResult {
 
 struct SweepPoint {
   double slip = 0.0;
+  double slip_angle_deg = 0.0;
+  double camber_deg = 0.0;
   double rolling_radius_mm = 0.0;
   double deflection_mm = 0.0;  // δz: the footprint's, or adjusted to hold Qz (SlipSweep::hold_load)
   RollingFigures figures;
@@ -106,6 +108,12 @@ struct RollingResult {
   std::vector<TreadPoint> tread_points;               // in the order of the states' vectors
   std::vector<RollingStateResult> states;             // as listed in the study (converged or not)
   std::vector<SweepPoint> sweep;                      // converged points, by slip
+  std::vector<SweepPoint> angle_sweep;                // converged points, by slip angle
+  std::vector<SweepPoint> combined;                   // converged (κ, α) points, by κ then α
+  bool planar_shear = false;                          // the tread shear a 2-vector (MODEL.md §7)
+  // dFy/dα at α = 0 (N per degree) and the pneumatic trail there, from the α sweep's points nearest 0.
+  std::optional<double> cornering_stiffness_N_per_deg;
+  std::optional<double> pneumatic_trail_at_zero_mm;
   SolveCounters counters;                             // rolling phase (after the footprint)
 };
 

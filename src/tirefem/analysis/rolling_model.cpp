@@ -1,0 +1,241 @@
+#include "tirefem/analysis/rolling_model.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "tirefem/analysis/inflation.hpp"
+#include "tirefem/forms/pressure_form.hpp"
+#include "tirefem/forms/shell_internal_force.hpp"
+
+namespace tirefem {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// Points that may touch the support while rolling: the static patch's angular extent along the flow,
+// widened by 30% of its length and two elements on each side (the patch moves and grows little).
+std::vector<char> friction_window(const ShellMesh& mesh, const std::vector<TreadPoint>& points,
+                                  const std::vector<TreadPointState>& states) {
+  double lo = 1e300, hi = -1e300;
+  for (std::size_t q = 0; q < points.size(); ++q)
+    if (states[q].pressure > 0) lo = std::min(lo, points[q].v), hi = std::max(hi, points[q].v);
+  double element_angle = 0.0;
+  for (int j = 0; j + 1 < static_cast<int>(mesh.v_values.size()); ++j)
+    if (mesh.v_values[j] <= 0.0 && mesh.v_values[j + 1] >= 0.0) element_angle = mesh.v_values[j + 1] - mesh.v_values[j];
+  const double margin = 0.3 * (hi - lo) + 2.0 * element_angle;
+  std::vector<char> window(points.size());
+  for (std::size_t q = 0; q < points.size(); ++q) window[q] = points[q].v >= lo - margin && points[q].v <= hi + margin;
+  return window;
+}
+
+}  // namespace
+
+RollingModel::RollingModel(const TyreMesh& tm, const TyreDescription& tyre, const InflationSettings& inflation,
+                           const ContactSettings& settings, const RollingStudy& study, RollingResult& result)
+    : tm_(tm), settings_(settings), result_(result) {
+  // On a plane the road may be cambered: the model keeps access to its tilt.
+  if (study.support.kind == SupportDescription::Kind::plane) {
+    auto plane = std::make_unique<CamberedPlane>();
+    cambered_ = plane.get();
+    support_ = std::move(plane);
+  } else {
+    support_ = make_support(study.support);
+  }
+  const StaticContactResult& fp = result.footprint;
+  DofMap dofs(tm.mesh.dof_count());
+  dofs.fix(tm.fixed_dofs);
+  std::vector<std::unique_ptr<Form>> forms;
+  forms.push_back(std::make_unique<ShellInternalForce>(tm.mesh, tm.sections, Kinematics::nonlinear));
+  forms.push_back(std::make_unique<PressureForm>(tm.mesh, tm.pressure_elements, inflation.pressure,
+                                                 Kinematics::nonlinear, /*symmetrize=*/false));
+  auto contact = std::make_unique<WinklerContactForm>(tm.mesh, fp.tread_points, tyre.tread_stiffness, *support_);
+  contact_ = contact.get();
+  forms.push_back(std::move(contact));
+  // The vehicle travels in +y: the support moves in −y under the tyre (reversed: +y).
+  auto friction = std::make_unique<TreadFrictionForm>(
+      tm.mesh, contact_->points(), tyre.tread_stiffness, tyre.tread_shear_modulus, *support_,
+      study.reverse ? 1 : -1, friction_window(tm.mesh, contact_->points(), fp.final_state.tread));
+  friction_ = friction.get();
+  const RollingStudy::TreadShear shear = study.tread_shear.value_or(
+      tm.half_model ? RollingStudy::TreadShear::longitudinal : RollingStudy::TreadShear::planar);
+  friction_->set_planar(shear == RollingStudy::TreadShear::planar);
+  result.planar_shear = friction_->planar();
+  forms.push_back(std::move(friction));
+  problem_ = std::make_unique<NonlinearProblem>(std::move(dofs), std::move(forms));
+  problem_->load_scale();  // inflation load, before the support is raised (as in the static run)
+  NewtonSettings ns;
+  ns.max_iterations = settings.max_newton_iterations;
+  ns.residual_tolerance = settings.residual_tolerance;
+  // An unsymmetric LU costs about twice a Cholesky: reuse it as GMRES preconditioner while that
+  // converges fast (the tangent changes little between iterations and neighbouring states).
+  ns.reuse_factorization = true;
+  // GMRES gives up after 25 iterations (then a fresh LU); measured on the 15-point sweep before the
+  // refresh after 8 (NewtonSettings): 12 → 28 LUs, 41 s; 25 → 4 LUs, 31 s; 40 → 65 s.
+  ns.max_krylov_iterations = 25;
+  newton_ = std::make_unique<NewtonSolver>(*problem_, ns);
+  set_deflection(fp.final_state.deflection_mm);
+  base_ = fp.final_state.displacement;
+  result.tread_points = contact_->points();
+}
+
+Eigen::Vector3d RollingModel::parameters(const WheelSlip& slip) const {
+  return {tm_.axis_z / slip.rolling_radius, std::tan(slip.slip_angle), slip.camber};
+}
+
+void RollingModel::apply(const Eigen::Vector3d& p) {
+  friction_->set_rolling_radius(tm_.axis_z / p[0]);
+  // Per unit of the support's travel it moves sideways by tan α along +x (reversed travel: along −x).
+  friction_->set_lateral_drift(result_.reverse ? -p[1] : p[1]);
+  if (cambered_) cambered_->set_camber(p[2]);
+  else if (p[2] != 0.0) throw std::invalid_argument("camber on a support other than a plane");
+}
+
+RollingModel::Solved RollingModel::solve(const FrictionLaw& law, const WheelSlip& slip) {
+  const auto t0 = Clock::now();
+  const int factorizations0 = newton_->linear_stats().factorizations;
+  const int newton0 = newton_->total_iterations();
+  Solved s;
+  const bool full_slip = law.mode == FrictionLaw::Mode::full_slip;
+  const Eigen::Vector3d target = parameters(slip);
+  const Known* from = full_slip ? nullptr : nearest(target);
+  double done = 0.0, step = 1.0;  // continuation parameter from the start state (0) to the target (1)
+  Eigen::VectorXd u = from ? from->u : base_;
+  Eigen::VectorXd previous_u = u;  // full slip: the converged stage before u, at previous_t
+  double previous_t = 0.0;
+  const Eigen::Vector3d p0 = from ? from->parameters : target;
+  int cutbacks = 0;
+  ContactSolveOutcome last;
+  while (done < 1.0) {
+    const double t = std::min(1.0, done + step);
+    FrictionLaw stage = law;
+    Eigen::Vector3d p = target;
+    if (full_slip) stage.friction = law.friction * t;
+    else p = p0 + t * (target - p0);
+    friction_->set_law(stage);
+    apply(p);
+    Eigen::VectorXd trial = u;
+    if (law.mode == FrictionLaw::Mode::coulomb) trial = predict(p, u);
+    else if (full_slip && done > previous_t) trial += (t - done) / (done - previous_t) * (u - previous_u);
+    last = solve_rolling_state(*newton_, *contact_, *friction_, trial, settings_);
+    ++s.counts.solves;
+    if (last.converged && friction_->contact_outside_window(trial) > 0) {
+      last.converged = false;
+      last.failure = "the contact patch grew beyond the friction window";
+      cutbacks = 6;  // not a convergence problem: do not cut back
+    }
+    if (!last.converged) {
+      if (++cutbacks > 5) {
+        s.failure = last.failure;
+        break;
+      }
+      step *= 0.5;
+      continue;
+    }
+    previous_u = std::move(u);
+    previous_t = done;
+    u = std::move(trial);
+    done = t;
+    if (law.mode == FrictionLaw::Mode::coulomb) known_.push_back({p, u});
+  }
+  s.converged = done >= 1.0;
+  s.counts.contact_iterations = last.contact_iterations;
+  s.counts.newton_iterations = newton_->total_iterations() - newton0;
+  s.counts.factorizations = newton_->linear_stats().factorizations - factorizations0;
+  s.counts.time_s = seconds_since(t0);
+  if (s.converged) {
+    s.figures = figures(u);
+    s.u = std::move(u);
+  }
+  return s;
+}
+
+void RollingModel::hold_load(Solved& s, double target, double tolerance, double stiffness) {
+  const auto t0 = Clock::now();
+  const int factorizations0 = newton_->linear_stats().factorizations;
+  const int newton0 = newton_->total_iterations();
+  double d0 = deflection_, q0 = s.figures.Qz_N, slope = stiffness;
+  for (int it = 0; it < 8 && s.converged && std::abs(q0 - target) > tolerance * target; ++it) {
+    const double d1 = d0 + (target - q0) / slope;
+    set_deflection(d1);
+    Eigen::VectorXd u = s.u;
+    const ContactSolveOutcome o = solve_rolling_state(*newton_, *contact_, *friction_, u, settings_);
+    ++s.counts.solves;
+    if (!o.converged) {
+      s.converged = false;
+      s.failure = "holding Qz: " + o.failure;
+      break;
+    }
+    s.u = std::move(u);
+    s.figures = figures(s.u);
+    if (s.figures.Qz_N != q0) slope = (s.figures.Qz_N - q0) / (d1 - d0);
+    d0 = d1, q0 = s.figures.Qz_N;
+  }
+  if (s.converged && std::abs(q0 - target) > tolerance * target) {
+    s.converged = false;
+    s.failure = fmt::format("Qz = {} N not held within 8 deflection steps (Qz {:.1f} N)", target, q0);
+  }
+  s.counts.newton_iterations += newton_->total_iterations() - newton0;
+  s.counts.factorizations += newton_->linear_stats().factorizations - factorizations0;
+  s.counts.time_s += seconds_since(t0);
+}
+
+void RollingModel::set_deflection(double deflection) {
+  deflection_ = deflection;
+  contact_->set_deflection(deflection);
+  friction_->set_deflection(deflection);
+}
+
+RollingFigures RollingModel::figures(const Eigen::VectorXd& u) const {
+  return rolling_figures(contact_->points(), contact_->evaluate(u), friction_->evaluate(u), tm_.axis_z,
+                         tm_.half_model, result_.reverse, wheel_frame(*support_, deflection_, result_.reverse));
+}
+
+double RollingModel::static_full_stick_Qy(double rolling_radius) {
+  FrictionLaw law;
+  law.mode = FrictionLaw::Mode::full_stick;
+  friction_->set_law(law);
+  apply(parameters({rolling_radius, 0.0, 0.0}));
+  return figures(base_).Qy_N;
+}
+
+void RollingModel::fill(RollingStateResult& state, const Solved& s) const {
+  state.converged = s.converged;
+  state.failure = s.failure;
+  state.figures = s.figures;
+  state.counts = s.counts;
+  if (!s.converged) return;
+  state.displacement = s.u;
+  state.normal = contact_->evaluate(s.u);
+  state.tangential = friction_->evaluate(s.u);
+}
+
+void RollingModel::finish(SolveCounters& c) const { add_counters(c, *newton_, *problem_); }
+
+const RollingModel::Known* RollingModel::nearest(const Eigen::Vector3d& p, const Known* other) const {
+  const Known* best = nullptr;
+  for (const Known& k : known_)
+    if (&k != other && (!other || (k.parameters - other->parameters).norm() > 1e-15) &&
+        (!best || (k.parameters - p).norm() < (best->parameters - p).norm()))
+      best = &k;
+  return best;
+}
+
+// Secant through the two nearest converged states, when the target lies on (or close to) their line and
+// within twice their spacing (extrapolating further from two close states, e.g. the free-rolling
+// iterates, amplifies their difference); else the start.
+Eigen::VectorXd RollingModel::predict(const Eigen::Vector3d& p, const Eigen::VectorXd& start) const {
+  const Known* a = nearest(p);
+  const Known* b = a ? nearest(p, a) : nullptr;
+  if (!a || !b) return start;
+  const Eigen::Vector3d ab = b->parameters - a->parameters, ap = p - a->parameters;
+  const double t = ap.dot(ab) / ab.squaredNorm();
+  if (std::abs(t) > 2.0 || (ap - t * ab).norm() > 0.25 * ap.norm()) return start;
+  return a->u + t * (b->u - a->u);
+}
+
+}  // namespace tirefem

@@ -1,0 +1,80 @@
+#pragma once
+// The model of a rolling study (internal to analysis/rolling*.cpp): the inflated, statically loaded tyre
+// with the tread's friction (forms/tread_friction_form.hpp), its Newton solver (LU) and the converged
+// states, from which each new state is predicted and continued.
+//
+// A state is set by the wheel's slip: the rolling radius Rk = V/Ω (longitudinal slip), the slip angle α
+// and the camber γ (MODEL.md §7). In the model's frame the support moves along ∓y under the fixed axle
+// and, at a slip angle, also sideways by tan α per unit of travel (ISO 8855: α > 0 when the wheel moves
+// to the left of its heading, so the road moves to the right under it, towards +x, when the wheel
+// travels in +y); camber tilts the road plane (road/cambered_plane.hpp).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "tirefem/analysis/rolling.hpp"
+#include "tirefem/road/cambered_plane.hpp"
+
+namespace tirefem {
+
+struct WheelSlip {
+  double rolling_radius = 0.0;  // Rk, mm
+  double slip_angle = 0.0;      // α, rad
+  double camber = 0.0;          // γ, rad
+};
+
+class RollingModel {
+ public:
+  RollingModel(const TyreMesh& tm, const TyreDescription& tyre, const InflationSettings& inflation,
+               const ContactSettings& settings, const RollingStudy& study, RollingResult& result);
+
+  struct Solved {
+    bool converged = false;
+    std::string failure;
+    RollingFigures figures;
+    RollingSolveCounts counts;
+    Eigen::VectorXd u;
+  };
+
+  // Solves with the given law at the given slip. Coulomb and full stick: from the nearest converged
+  // Coulomb state (predicted), continued in (1/Rk, tan α, γ) from it, the step halved when a solve fails.
+  // Full slip (α = γ = 0): from the static footprint, continued in μ with a secant predictor; the whole
+  // friction force at once is tried first.
+  Solved solve(const FrictionLaw& law, const WheelSlip& slip);
+  // Holds Qz at `target` by moving the support (δz): secant steps from `stiffness` (dQz/dδz), each a
+  // rolling solve from the last state, until |Qz − target| ≤ tolerance · target. Leaves the model at the
+  // new deflection.
+  void hold_load(Solved& s, double target, double tolerance, double stiffness);
+  void set_deflection(double deflection);
+  double deflection() const { return deflection_; }
+  RollingFigures figures(const Eigen::VectorXd& u) const;
+  // Qy of a full-stick plan at the static state for Rk (no solve): affine in Rk, it estimates Re.
+  double static_full_stick_Qy(double rolling_radius);
+  void fill(RollingStateResult& state, const Solved& s) const;
+  void finish(SolveCounters& c) const;
+
+ private:
+  struct Known {
+    Eigen::Vector3d parameters;  // (axle height / Rk, tan α, γ): κ, α and γ on comparable scales
+    Eigen::VectorXd u;
+  };
+  Eigen::Vector3d parameters(const WheelSlip& slip) const;
+  void apply(const Eigen::Vector3d& parameters);
+  const Known* nearest(const Eigen::Vector3d& p, const Known* other = nullptr) const;
+  Eigen::VectorXd predict(const Eigen::Vector3d& p, const Eigen::VectorXd& start) const;
+
+  const TyreMesh& tm_;
+  ContactSettings settings_;
+  RollingResult& result_;
+  std::unique_ptr<SupportSurface> support_;
+  CamberedPlane* cambered_ = nullptr;  // the support when it is a plane (camber allowed)
+  WinklerContactForm* contact_ = nullptr;
+  TreadFrictionForm* friction_ = nullptr;
+  std::unique_ptr<NonlinearProblem> problem_;
+  std::unique_ptr<NewtonSolver> newton_;
+  Eigen::VectorXd base_;  // the static footprint
+  double deflection_ = 0.0;
+  std::vector<Known> known_;
+};
+
+}  // namespace tirefem
