@@ -119,10 +119,14 @@ TEST(RollingReport, StatesTableMarksUndefinedAndFailedValuesNaN) {
             (std::vector<std::string>{"state", "slip", "rolling_radius_mm", "loaded_radius_mm", "Qz_N",
                                       "Qy_N", "Mx_Nmm", "stick_area_fraction", "contact_area_mm2",
                                       "max_traction_MPa", "contact_iterations", "newton_iterations",
-                                      "factorizations", "solves", "time_s", "converged"}));
+                                      "factorizations", "solves", "time_s", "converged", "slip_angle_deg",
+                                      "camber_deg", "Fx_N", "Fy_N", "Fz_N", "Mz_Nmm", "overturning_moment_Nmm",
+                                      "pneumatic_trail_mm"}));
   ASSERT_EQ(t.rows.size(), 4u);
-  EXPECT_EQ(t.rows[0],
-            (std::vector<double>{0, 0, 280, 268.5, 3700, 0, -50, 0.5, 12000, 0.15, 3, 17, 18, 2, 1.5, 1}));
+  const std::vector<double> first(t.rows[0].begin(), t.rows[0].begin() + 23);
+  EXPECT_EQ(first, (std::vector<double>{0, 0, 280, 268.5, 3700, 0, -50, 0.5, 12000, 0.15, 3, 17, 18, 2, 1.5, 1,
+                                        0, 0, 0, 0, 0, 0, 0}));
+  EXPECT_TRUE(std::isnan(t.rows[0][23]));  // no lateral force: no trail
   EXPECT_EQ(t.rows[1][0], 4.0);
   EXPECT_TRUE(std::isnan(t.rows[1][1]));  // spinning: no slip
   EXPECT_EQ(t.rows[1][2], 0.0);
@@ -133,6 +137,7 @@ TEST(RollingReport, StatesTableMarksUndefinedAndFailedValuesNaN) {
   EXPECT_EQ(failed[1], -0.05);
   EXPECT_EQ(failed[3], 268.5);
   for (int c = 4; c <= 9; ++c) EXPECT_TRUE(std::isnan(failed[c])) << t.columns[c];
+  for (int c = 18; c <= 23; ++c) EXPECT_TRUE(std::isnan(failed[c])) << t.columns[c];
   EXPECT_EQ(failed[11], 17.0);
   EXPECT_EQ(failed[15], 0.0);
   for (const auto& row : t.rows) EXPECT_EQ(row.size(), t.columns.size());

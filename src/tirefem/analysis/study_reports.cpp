@@ -6,6 +6,7 @@
 #include "tirefem/io/vtu_writer.hpp"
 #include "tirefem/results/footprint_report.hpp"
 #include "tirefem/results/inflation_report.hpp"
+#include "tirefem/results/cornering_report.hpp"
 #include "tirefem/results/rolling_report.hpp"
 #include "tirefem/results/shell_results.hpp"
 
@@ -64,6 +65,15 @@ void write_rolling(const ResultsFolder& folder, ReportWriter& plots, const TyreM
   if (!r.sweep.empty()) {
     write_csv(folder.path(n + "/slip_sweep.csv"), slip_sweep_table(r));
     plots.plot(n + "_slip_curve", slip_sweep_plot(r));
+  }
+  if (!r.angle_sweep.empty()) {
+    write_csv(folder.path(n + "/angle_sweep.csv"), angle_sweep_table(r));
+    plots.plot(n + "_lateral_force", lateral_force_plot(r));
+    plots.plot(n + "_aligning_moment", aligning_moment_plot(r));
+  }
+  if (!r.combined.empty()) {
+    write_csv(folder.path(n + "/combined_slip.csv"), combined_slip_table(r));
+    plots.plot(n + "_friction_ellipse", friction_ellipse_plot(r));
   }
   if (!r.footprint.completed) return;
   const auto inflated = evaluate_element_results(tm, c.tyre, r.footprint.inflation.displacement, Kinematics::nonlinear);

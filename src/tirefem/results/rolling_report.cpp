@@ -6,6 +6,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "tirefem/results/cornering_report.hpp"
 #include "tirefem/results/tread_point_grid.hpp"
 #include "tirefem/road/support_surface.hpp"
 
@@ -111,9 +112,13 @@ CsvTable rolling_states_table(const RollingResult& r) {
   t.comments.push_back(
       "state: 0 free, 1 given_slip, 2 given_radius, 3 full_stick, 4 full_slip; nan: not defined (slip of a "
       "spinning wheel, Rk of a locked one) or not converged (the figures)");
+  t.comments.push_back(
+      "Fx Fy Fz Mz overturning_moment: W-axis system (ISO 8855 / TYDEX) at the contact centre (X along the "
+      "travel, Y to the left, Z up); pneumatic_trail = -Mz/Fy (nan where |Fy| <= 1e-3 Fz)");
   t.columns = {"state", "slip", "rolling_radius_mm", "loaded_radius_mm", "Qz_N", "Qy_N", "Mx_Nmm",
                "stick_area_fraction", "contact_area_mm2", "max_traction_MPa", "contact_iterations",
-               "newton_iterations", "factorizations", "solves", "time_s", "converged"};
+               "newton_iterations", "factorizations", "solves", "time_s", "converged", "slip_angle_deg",
+               "camber_deg", "Fx_N", "Fy_N", "Fz_N", "Mz_Nmm", "overturning_moment_Nmm", "pneumatic_trail_mm"};
   for (std::size_t k = 0; k < r.states.size(); ++k) {
     const RollingStateResult& s = r.states[k];
     t.comments.push_back(
@@ -127,7 +132,9 @@ CsvTable rolling_states_table(const RollingResult& r) {
                       figure(f.stick_area_fraction), figure(f.contact_area_mm2), figure(f.max_traction_MPa),
                       static_cast<double>(c.contact_iterations), static_cast<double>(c.newton_iterations),
                       static_cast<double>(c.factorizations), static_cast<double>(c.solves), c.time_s,
-                      s.converged ? 1.0 : 0.0});
+                      s.converged ? 1.0 : 0.0, s.spec.slip_angle_deg, s.spec.camber_deg, figure(f.Fx_N),
+                      figure(f.Fy_N), figure(f.Fz_N), figure(f.aligning_moment_Nmm),
+                      figure(f.overturning_moment_Nmm), s.converged ? or_nan(f.pneumatic_trail_mm) : kNaN});
   }
   return t;
 }
@@ -222,6 +229,7 @@ VtuMesh tread_points_vtu(const RollingResult& r, const RollingStateResult& s) {
   const std::size_t n = r.tread_points.size();
   VtuMesh v;
   std::vector<double> pressure(n), traction(n), q_y(n), shear(n), status(n);
+  std::vector<Eigen::Vector3d> traction_vector(n);
   for (std::size_t k = 0; k < n; ++k) {
     v.points.push_back(s.normal[k].position);
     v.vertices.push_back(static_cast<int>(k));
@@ -230,7 +238,10 @@ VtuMesh tread_points_vtu(const RollingResult& r, const RollingStateResult& s) {
     q_y[k] = qy(r, s, static_cast<int>(k));
     shear[k] = s.tangential[k].shear;
     status[k] = status_code(s.tangential[k].status);
+    const double w = r.tread_points[k].weight;
+    traction_vector[k] = w > 0 ? Eigen::Vector3d(s.tangential[k].force / w) : Eigen::Vector3d::Zero();
   }
+  v.point_vectors = {{"tangential_stress_MPa", std::move(traction_vector)}};
   v.point_scalars = {{"pressure_MPa", std::move(pressure)},
                      {"traction_MPa", std::move(traction)},
                      {"qy_MPa", std::move(q_y)},
@@ -264,6 +275,7 @@ toml::table rolling_summary(const RollingResult& r) {
     if (s.converged) {
       insert_figures(st, s.figures);
       st.insert("contact_area_mm2", s.figures.contact_area_mm2);
+      insert_tyre_figures(st, s.figures, s.spec.slip_angle_deg, s.spec.camber_deg, r.friction);
     }
     st.insert("contact_iterations", s.counts.contact_iterations);
     st.insert("newton_iterations", s.counts.newton_iterations);
@@ -289,6 +301,7 @@ toml::table rolling_summary(const RollingResult& r) {
     }
     t.insert("sweep", std::move(sweep));
   }
+  insert_cornering_summary(t, r);
   return t;
 }
 
