@@ -1,0 +1,203 @@
+// Cornering (MODEL.md §7, issue 11): steady rolling at a slip angle on the full model (bead to bead) of a
+// coarse mesh of the example tyre (40 × 12 per half, mirrored: 24 elements bead to bead; 4 × 4 tread points per element,
+// μ = 0.7, footprint of 3000 N on the plane), with the planar tread shear.
+// References and tolerances:
+// - Signs (ISO 8855 / TYDEX W axes, README): α > 0 (the wheel moving to the left of its heading) gives a
+//   lateral force to the right, Fy < 0, an aligning moment Mz > 0 that turns the wheel towards its
+//   direction of travel, and a positive pneumatic trail −Mz/Fy.
+// - Symmetry: the mesh and the tyre are symmetric about the equatorial plane, so α → −α mirrors the
+//   solution: Fy and Mz change sign, Fx and Fz do not; 1e-6 of Fz (the two runs differ by round-off and
+//   their iteration paths, the Newton tolerance is 1e-10).
+// - Friction bound (eq. 15 in two dimensions): at every tread point |q_t| ≤ μ qn to round-off (1e-9
+//   relative), so |(Fx, Fy)| ≤ μ Fz.
+// - Equilibrium, all six components: the rim (the clamped beads) balances the contact forces, taken at
+//   the breaker (the Winkler tread passes them on without the couple of a sheared block): the shell's
+//   internal forces are self-equilibrated and the follower pressure on the closed full tyre has no
+//   resultant and no moment about the axle centre (its boundary, the two bead circles, are circles about
+//   the axis). 1e-6 of Fz (and of Fz × Rd for the moments).
+// - At α = 0 the full model reproduces the half model (both with the planar shear): free-rolling radius
+//   to 1e-6 relative, Qy at κ = 0.02 to 1e-4 of Qz (the half model's symmetry conditions against the full
+//   model's symmetric solution: the same equations, solved along different paths).
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+#include <gtest/gtest.h>
+
+#include "contact_support.hpp"
+#include "tirefem/analysis/rolling.hpp"
+
+namespace tirefem::verification {
+namespace {
+
+RollingStateSpec state(RollingStateSpec::Kind kind, double slip, double alpha_deg, const char* name) {
+  RollingStateSpec s;
+  s.kind = kind;
+  s.slip = slip;
+  s.slip_angle_deg = alpha_deg;
+  s.name = name;
+  return s;
+}
+
+const TyreMesh& tyre(bool half) {
+  static std::map<bool, TyreMesh> meshes;
+  auto it = meshes.find(half);
+  // The full model mirrors the half model's 12 meridional elements (build_tyre_mesh doubles them).
+  if (it == meshes.end()) it = meshes.emplace(half, build_tyre_mesh(example_case().tyre, coarse_mesh(40, 12, half))).first;
+  return it->second;
+}
+
+ContactSettings settings() {
+  ContactSettings s = test_contact_settings(ContactSettings::Iteration::single_loop);
+  s.residual_tolerance = 1e-10;
+  return s;
+}
+
+enum class Run { full, half };
+
+const RollingResult& run(Run which) {
+  static std::map<Run, RollingResult> cache;
+  auto it = cache.find(which);
+  if (it == cache.end()) {
+    const Stopwatch clock;
+    RollingStudy s;
+    s.name = which == Run::full ? "full" : "half";
+    s.target_load = 3000.0;
+    s.friction = 0.7;
+    s.tread_shear = RollingStudy::TreadShear::planar;
+    using K = RollingStateSpec::Kind;
+    s.states = {state(K::free, 0.0, 0.0, "free"), state(K::given_slip, 0.02, 0.0, "traction")};
+    if (which == Run::full)
+      s.states.insert(s.states.end(), {state(K::given_slip, 0.0, 2.0, "alpha+2"), state(K::given_slip, 0.0, -2.0, "alpha-2")});
+    const Case& c = example_case();
+    it = cache.emplace(which, run_rolling(tyre(which == Run::half), c.tyre, c.inflation, settings(), s)).first;
+    std::printf("  rolling study '%s': %.1f s, %d factorisations, %d Newton iterations\n", it->second.name.c_str(),
+                clock.seconds(), it->second.counters.factorizations, it->second.counters.newton_iterations);
+  }
+  return it->second;
+}
+
+const RollingStateResult& named(const RollingResult& r, const std::string& name) {
+  for (const RollingStateResult& s : r.states)
+    if (s.name == name) {
+      EXPECT_TRUE(s.converged) << name << ": " << s.failure;
+      return s;
+    }
+  throw std::runtime_error("no state " + name);
+}
+
+TEST(Cornering, SlipAngleGivesLateralForceAndAligningMomentOfTheIsoSigns) {
+  const RollingResult& r = run(Run::full);
+  ASSERT_TRUE(r.completed) << r.failure;
+  const RollingFigures& f = named(r, "alpha+2").figures;
+  std::printf("  α +2°: Fx %.1f N, Fy %.1f N, Fz %.1f N, Mz %.0f N·mm, Mx %.0f N·mm, trail %.2f mm, Fy/Fz per degree "
+              "%.3f\n", f.Fx_N, f.Fy_N, f.Fz_N, f.aligning_moment_Nmm, f.overturning_moment_Nmm,
+              f.pneumatic_trail_mm.value_or(NAN), -f.Fy_N / f.Fz_N / 2.0);
+  EXPECT_LT(f.Fy_N, -0.1 * f.Fz_N);
+  EXPECT_GT(f.aligning_moment_Nmm, 0.0);
+  ASSERT_TRUE(f.pneumatic_trail_mm.has_value());
+  EXPECT_GT(*f.pneumatic_trail_mm, 0.0);
+}
+
+TEST(Cornering, OppositeSlipAnglesMirrorTheForces) {
+  const RollingResult& r = run(Run::full);
+  const RollingFigures& a = named(r, "alpha+2").figures;
+  const RollingFigures& b = named(r, "alpha-2").figures;
+  const double tol = 1e-6 * a.Fz_N;
+  EXPECT_NEAR(a.Fy_N, -b.Fy_N, tol);
+  EXPECT_NEAR(a.Fx_N, b.Fx_N, tol);
+  EXPECT_NEAR(a.Fz_N, b.Fz_N, tol);
+  EXPECT_NEAR(a.aligning_moment_Nmm, -b.aligning_moment_Nmm, tol * r.loaded_radius_mm);
+  EXPECT_NEAR(a.overturning_moment_Nmm, -b.overturning_moment_Nmm, tol * r.loaded_radius_mm);
+  // Straight ahead the full model has no lateral force (its symmetric solution).
+  const RollingFigures& free = named(r, "free").figures;
+  EXPECT_NEAR(free.Fy_N, 0.0, tol);
+  EXPECT_NEAR(free.aligning_moment_Nmm, 0.0, tol * r.loaded_radius_mm);
+}
+
+TEST(Cornering, NoPointCarriesMoreThanMuTimesItsPressure) {
+  const RollingResult& r = run(Run::full);
+  for (const char* name : {"alpha+2", "alpha-2", "traction"}) {
+    const RollingStateResult& s = named(r, name);
+    int slipping = 0;
+    for (std::size_t q = 0; q < r.tread_points.size(); ++q) {
+      const double w = r.tread_points[q].weight;
+      const double qt = s.tangential[q].force.norm() / w, qn = s.normal[q].force.norm() / w;
+      EXPECT_LE(qt, r.friction * qn * (1 + 1e-9) + 1e-12) << name << " point " << q;
+      slipping += s.tangential[q].status == TreadContact::slip;
+    }
+    EXPECT_GT(slipping, 0) << name;  // the bound is met with equality somewhere, not vacuously
+    const RollingFigures& f = s.figures;
+    EXPECT_LE(std::hypot(f.Fx_N, f.Fy_N), r.friction * f.Fz_N);
+  }
+}
+
+// The rim's reaction (the residual of shell and pressure at the clamped bead DOFs) about the axle centre.
+struct Wrench {
+  Eigen::Vector3d force = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero();
+};
+Wrench rim_reaction(const TyreMesh& tm, double pressure, const Eigen::VectorXd& u) {
+  DofMap dofs(tm.mesh.dof_count());
+  dofs.fix(tm.fixed_dofs);
+  std::vector<std::unique_ptr<Form>> forms;
+  forms.push_back(std::make_unique<ShellInternalForce>(tm.mesh, tm.sections, Kinematics::nonlinear));
+  forms.push_back(std::make_unique<PressureForm>(tm.mesh, tm.pressure_elements, pressure, Kinematics::nonlinear, true));
+  NonlinearProblem problem(dofs, std::move(forms));
+  problem.evaluate(u, 1.0, false);
+  const Eigen::VectorXd& r = problem.system().residual();
+  const Eigen::Vector3d centre(0.0, 0.0, tm.axis_z);
+  Wrench out;
+  for (int d : tm.fixed_dofs) {
+    const int pair = d / 6;
+    const bool outer = d % 6 >= 3;
+    const Eigen::Vector3d x = (outer ? tm.mesh.outer_nodes[pair] : tm.mesh.inner_nodes[pair]) +
+                              u.segment<3>(6 * pair + (outer ? 3 : 0));
+    Eigen::Vector3d f = Eigen::Vector3d::Zero();
+    f[d % 3] = r[d];
+    out.force += f;
+    out.moment += (x - centre).cross(f);
+  }
+  return out;
+}
+
+TEST(Cornering, RimBalancesAllSixComponentsOfTheContact) {
+  const RollingResult& r = run(Run::full);
+  const TyreMesh& tm = tyre(false);
+  const Eigen::Vector3d centre(0.0, 0.0, tm.axis_z);
+  for (const char* name : {"alpha+2", "traction"}) {
+    const RollingStateResult& s = named(r, name);
+    const Wrench rim = rim_reaction(tm, example_case().inflation.pressure, s.displacement);
+    Wrench contact;
+    for (std::size_t q = 0; q < r.tread_points.size(); ++q) {
+      const TreadPoint& p = r.tread_points[q];
+      const Eigen::Vector3d x = s.normal[q].position - p.height * p.normal;  // at the breaker
+      const Eigen::Vector3d f = s.normal[q].force + s.tangential[q].force;
+      contact.force += f;
+      contact.moment += (x - centre).cross(f);
+    }
+    const double fz = s.figures.Fz_N;
+    std::printf("  %s: contact force (%.4f, %.4f, %.4f) N, rim (%.4f, %.4f, %.4f) N; moments (%.2f, %.2f, %.2f) / "
+                "(%.2f, %.2f, %.2f) N·mm\n", name, contact.force.x(), contact.force.y(), contact.force.z(),
+                -rim.force.x(), -rim.force.y(), -rim.force.z(), contact.moment.x(), contact.moment.y(),
+                contact.moment.z(), -rim.moment.x(), -rim.moment.y(), -rim.moment.z());
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_NEAR(contact.force[i], -rim.force[i], 1e-6 * fz) << name << " force " << i;
+      EXPECT_NEAR(contact.moment[i], -rim.moment[i], 1e-6 * fz * r.loaded_radius_mm) << name << " moment " << i;
+    }
+  }
+}
+
+TEST(Cornering, StraightAheadTheFullModelReproducesTheHalfModel) {
+  const RollingResult& full = run(Run::full);
+  const RollingResult& half = run(Run::half);
+  ASSERT_TRUE(full.effective_rolling_radius_mm && half.effective_rolling_radius_mm);
+  std::printf("  Re full %.6f / half %.6f mm; traction Qy %.3f / %.3f N\n", *full.effective_rolling_radius_mm,
+              *half.effective_rolling_radius_mm, named(full, "traction").figures.Qy_N,
+              named(half, "traction").figures.Qy_N);
+  EXPECT_NEAR(*full.effective_rolling_radius_mm / *half.effective_rolling_radius_mm, 1.0, 1e-6);
+  EXPECT_NEAR(named(full, "traction").figures.Qy_N, named(half, "traction").figures.Qy_N,
+              1e-4 * named(half, "traction").figures.Qz_N);
+}
+
+}  // namespace
+}  // namespace tirefem::verification
