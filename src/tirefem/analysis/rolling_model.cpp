@@ -95,14 +95,14 @@ void RollingModel::apply(const Eigen::Vector3d& p) {
   else if (p[2] != 0.0) throw std::invalid_argument("camber on a support other than a plane");
 }
 
-RollingModel::Solved RollingModel::solve(const FrictionLaw& law, const WheelSlip& slip) {
+RollingModel::Solved RollingModel::solve(const FrictionLaw& law, const WheelSlip& slip, bool from_last) {
   const auto t0 = Clock::now();
   const int factorizations0 = newton_->linear_stats().factorizations;
   const int newton0 = newton_->total_iterations();
   Solved s;
   const bool full_slip = law.mode == FrictionLaw::Mode::full_slip;
   const Eigen::Vector3d target = parameters(slip);
-  const Known* from = full_slip ? nullptr : nearest(target);
+  const Known* from = full_slip ? nullptr : from_last && !known_.empty() ? &known_.back() : nearest(target);
   double done = 0.0, step = 1.0;  // continuation parameter from the start state (0) to the target (1)
   Eigen::VectorXd u = from ? from->u : base_;
   Eigen::VectorXd previous_u = u;  // full slip: the converged stage before u, at previous_t
@@ -159,17 +159,26 @@ void RollingModel::hold_load(Solved& s, double target, double tolerance, double 
   const int factorizations0 = newton_->linear_stats().factorizations;
   const int newton0 = newton_->total_iterations();
   double d0 = deflection_, q0 = s.figures.Qz_N, slope = stiffness;
-  for (int it = 0; it < 8 && s.converged && std::abs(q0 - target) > tolerance * target; ++it) {
-    const double d1 = d0 + (target - q0) / slope;
+  int cutbacks = 0, steps = 0;
+  while (steps < 8 && s.converged && std::abs(q0 - target) > tolerance * target) {
+    const double d1 = d0 + (target - q0) / slope * std::pow(0.5, cutbacks);
     set_deflection(d1);
     Eigen::VectorXd u = s.u;
     const ContactSolveOutcome o = solve_rolling_state(*newton_, *contact_, *friction_, u, settings_);
     ++s.counts.solves;
     if (!o.converged) {
+      // A smaller change of δz from the last converged state (measured: the first δz step of a
+      // cornering state at α = 2° diverged where its halves converge).
+      if (++cutbacks <= 3) {
+        set_deflection(d0);
+        continue;
+      }
       s.converged = false;
       s.failure = "holding Qz: " + o.failure;
       break;
     }
+    cutbacks = 0;
+    ++steps;
     s.u = std::move(u);
     s.figures = figures(s.u);
     if (s.figures.Qz_N != q0) slope = (s.figures.Qz_N - q0) / (d1 - d0);

@@ -40,7 +40,8 @@ class RollingModel {
   // Coulomb state (predicted), continued in (1/Rk, tan α, γ) from it, the step halved when a solve fails.
   // Full slip (α = γ = 0): from the static footprint, continued in μ with a secant predictor; the whole
   // friction force at once is tried first.
-  Solved solve(const FrictionLaw& law, const WheelSlip& slip);
+  // `from_last`: continue from the state converged last instead of the nearest one.
+  Solved solve(const FrictionLaw& law, const WheelSlip& slip, bool from_last = false);
   // Holds Qz at `target` by moving the support (δz): secant steps from `stiffness` (dQz/dδz), each a
   // rolling solve from the last state, until |Qz − target| ≤ tolerance · target. Leaves the model at the
   // new deflection.

@@ -193,7 +193,17 @@ int TreadFrictionForm::march_planar(int l, const FrictionPlan& plan, const Eigen
     const Eigen::Matrix<double, 2, 3> grad = coordinate_gradients(k.travel, k.lateral);
     if (derivatives) ds.middleCols<3>(column(i)) -= grad;
 
-    if (pp.status == TreadContact::stick) {
+    // A point the plan holds as sliding whose trial shear lies inside the friction limit (a frozen plan
+    // met by an iterate that would stick there, or one of the single loop) takes the stick traction
+    // (G/hp) s: the return mapping of eq. (15) as one continuous function of u, μ kp g s / max(|s|,
+    // μ kp g hp/G). At a converged, self-consistent plan nothing changes (a sliding point's |s| exceeds
+    // the limit); during the iteration no sliding point meets an undefined direction (|s| → 0), where
+    // s/|s| would swing the traction round and stall Newton (measured: a frozen-plan Newton at α = 2°
+    // crept by 2% per iteration).
+    const double limit = slip_shear(q, g, 1.0);  // μ kp g hp/G
+    const bool inside = pp.status == TreadContact::slip && limit > 0.0 && s.norm() <= limit;
+    if (pp.status == TreadContact::stick || inside) {
+      o.status = TreadContact::stick;
       // {Fst}, [Kst] in 2D: (G/hp) s along (t, b).
       const double c = shear_modulus_ / p.height * p.weight;
       o.shear = s;
@@ -203,12 +213,29 @@ int TreadFrictionForm::march_planar(int l, const FrictionPlan& plan, const Eigen
         o.d_force.noalias() = c * frame * ds;
         o.d_force.middleCols<3>(column(i)) += c * (s.x() * dt + s.y() * db);
       }
+      if (inside) {  // passes its (unlimited) shear on to the points anchored on it
+        provided[i] = s - rolling_radius_ * flow_angle(q) * along + coordinates(k.travel, k.lateral);
+        if (derivatives) {
+          auto row = provided_d.middleRows<2>(2 * i);
+          row = ds;
+          row.middleCols<3>(column(i)) += grad;
+        }
+      }
+      continue;
+    }
+    // A sliding point of a frozen plan that has left the support (g ≤ 0) carries no friction and
+    // passes on no shear (its direction s/|s| would be undefined as s → 0 there).
+    if (limit <= 0.0) {
+      o.shear.setZero();
+      o.traction.setZero();
+      o.force.setZero();
+      provided[i] = -rolling_radius_ * flow_angle(q) * along + coordinates(k.travel, k.lateral);
+      if (derivatives) provided_d.middleRows<2>(2 * i).middleCols<3>(column(i)) = grad;
       continue;
     }
     // Slip (eq. 15 in 2D): μ kp g e, e = s/|s|.
     const double norm = s.norm();
     const Eigen::Vector2d e = norm > 0.0 ? Eigen::Vector2d(s / norm) : Eigen::Vector2d::UnitX();
-    const double limit = slip_shear(q, g, 1.0);  // μ kp g hp/G
     const double m = law_.friction * kp_ * p.weight;
     o.shear = limit * e;
     o.traction = law_.friction * kp_ * g * e;
