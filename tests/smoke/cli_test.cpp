@@ -97,6 +97,34 @@ TEST(Cli, CheckAcceptsTheExample) {
   EXPECT_NE(r.output.find("ok"), std::string::npos) << r.output;
 }
 
+TEST(Cli, CheckAcceptsTheCorneringExample) {
+  const CliRun r = run_cli("check " + std::string(TIREFEM_SOURCE_DIR) + "/examples/175-70R13-cornering.toml");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("ok"), std::string::npos) << r.output;
+}
+
+// A cornering study writes its tables, plots and the W-axis figures of every state to the summary.
+TEST(Cli, RunWritesTheCorneringResults) {
+  const fs::path out = scratch("cornering");
+  const CliRun r = run_cli("run " + std::string(TIREFEM_SOURCE_DIR) + "/tests/smoke/cornering_case.toml --out " +
+                           out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const char* f : {"cornering/states.csv", "cornering/angle_sweep.csv", "cornering/combined_slip.csv",
+                        "cornering/alpha_+2/tread_points.vtu", "plots/cornering_lateral_force.gp",
+                        "plots/cornering_aligning_moment.gp", "plots/cornering_friction_ellipse.gp"})
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+  const std::string summary = read_text(out / "summary.json");
+  for (const char* key : {"\"slip_angle_deg\"", "\"camber_deg\"", "\"Fx_N\"", "\"Fy_N\"", "\"Fz_N\"",
+                          "\"Mz_Nmm\"", "\"overturning_moment_Nmm\"", "\"pneumatic_trail_mm\"", "\"mu\"",
+                          "\"angle_sweep\"", "\"combined\"", "\"cornering_stiffness_N_per_deg\"",
+                          "\"tread_shear\" : \"planar\""})
+    EXPECT_NE(summary.find(key), std::string::npos) << key;
+  const std::string vtu = read_text(out / "cornering/alpha_+2/tread_points.vtu");
+  EXPECT_NE(vtu.find("tangential_stress_MPa"), std::string::npos);
+  EXPECT_EQ(top_level_value(summary, "completed"), "true") << r.output;
+  fs::remove_all(out.parent_path());
+}
+
 TEST(Cli, CheckAcceptsTheCoarseCase) {
   const CliRun r = run_cli("check " + kCoarseCase);
   EXPECT_EQ(r.exit_code, 0) << r.output;

@@ -131,7 +131,9 @@ bool run_sweep(RollingModel& model, const RollingStudy& study, RollingResult& r,
     if (t.new_branch) model.set_deflection(r.deflection_mm), skip = false;
     if (skip) continue;
     const double rk = re / (1.0 + t.slip);
-    RollingModel::Solved s = model.solve(law, {rk, t.alpha_deg * kDegree, t.gamma_deg * kDegree});
+    // Within a branch each point continues from its neighbour (the nearest state in (κ, tan α, γ) may
+    // lie on another branch, e.g. the α sweep's point for a combined-slip one, and measured, diverge).
+    RollingModel::Solved s = model.solve(law, {rk, t.alpha_deg * kDegree, t.gamma_deg * kDegree}, !t.new_branch);
     if (hold && s.converged) model.hold_load(s, study.target_load, study.load_tolerance, stiffness);
     const std::string label = fmt::format("{} κ {:+.4f}{}", what, t.slip, angles_label(t.alpha_deg, t.gamma_deg));
     if (!s.converged) {
