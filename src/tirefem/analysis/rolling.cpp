@@ -169,29 +169,23 @@ std::vector<SweepTarget> outward(std::vector<double> values, Make make) {
   return targets;
 }
 
-// dFy/dα at 0 and the trail there: least squares through the sweep points with |α| ≤ 1.01° (at least two),
-// else the two points nearest 0.
-void cornering_stiffness(RollingResult& r) {
-  std::vector<const SweepPoint*> near;
-  for (const SweepPoint& p : r.angle_sweep)
-    if (std::abs(p.slip_angle_deg) <= 1.01) near.push_back(&p);
-  if (near.size() < 2) {
-    near.clear();
-    for (const SweepPoint& p : r.angle_sweep) near.push_back(&p);
-    std::sort(near.begin(), near.end(), [](auto* a, auto* b) { return std::abs(a->slip_angle_deg) < std::abs(b->slip_angle_deg); });
-    if (near.size() > 2) near.resize(2);
-  }
-  if (near.size() < 2) return;
-  double sx = 0, sy = 0, sxx = 0, sxy = 0, sm = 0;
-  for (const SweepPoint* p : near)
-    sx += p->slip_angle_deg, sy += p->figures.Fy_N, sxx += p->slip_angle_deg * p->slip_angle_deg,
-        sxy += p->slip_angle_deg * p->figures.Fy_N, sm += p->slip_angle_deg * p->figures.aligning_moment_Nmm;
-  const double n = static_cast<double>(near.size()), det = n * sxx - sx * sx;
-  if (!(det > 0)) return;
-  const double slope = (n * sxy - sx * sy) / det;
-  r.cornering_stiffness_N_per_deg = slope;
-  // Mz ≈ −t · Fy near 0: the trail from the moments' and forces' first moments in α.
-  if (sxy != 0.0) r.pneumatic_trail_at_zero_mm = -sm / sxy;
+// dFy/dα and the pneumatic trail at α = 0 (κ and γ of the sweep): central differences over ±kProbeAngle,
+// two extra solves near the straight-ahead state, where the patch still sticks almost everywhere (the
+// sweep's own points lie in the nonlinear range). Not sweep points: not reported as such.
+constexpr double kProbeAngle = 0.2;  // degrees
+void cornering_stiffness(RollingModel& model, const RollingStudy& study, RollingResult& r) {
+  const SlipAngleSweep& sw = *study.angle_sweep;
+  FrictionLaw law;
+  law.friction = study.friction;
+  const double rk = *r.effective_rolling_radius_mm / (1.0 + sw.slip);
+  model.set_deflection(r.deflection_mm);
+  RollingModel::Solved plus = model.solve(law, {rk, kProbeAngle * kDegree, sw.camber_deg * kDegree});
+  RollingModel::Solved minus = model.solve(law, {rk, -kProbeAngle * kDegree, sw.camber_deg * kDegree});
+  if (!plus.converged || !minus.converged) return;
+  r.cornering_stiffness_N_per_deg = (plus.figures.Fy_N - minus.figures.Fy_N) / (2.0 * kProbeAngle);
+  const double dfy = plus.figures.Fy_N - minus.figures.Fy_N;
+  if (dfy != 0.0)
+    r.pneumatic_trail_at_zero_mm = -(plus.figures.aligning_moment_Nmm - minus.figures.aligning_moment_Nmm) / dfy;
 }
 
 }  // namespace
@@ -339,7 +333,7 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
     ok = run_sweep(model, study, r, targets, sw.hold_load, r.angle_sweep, "α sweep", progress) && ok;
     std::sort(r.angle_sweep.begin(), r.angle_sweep.end(),
               [](const SweepPoint& a, const SweepPoint& b) { return a.slip_angle_deg < b.slip_angle_deg; });
-    cornering_stiffness(r);
+    cornering_stiffness(model, study, r);
   }
   if (study.combined) {
     // Each slip κ a branch outwards in α from the point nearest α = 0.

@@ -111,7 +111,8 @@ struct RollingResult {
   std::vector<SweepPoint> angle_sweep;                // converged points, by slip angle
   std::vector<SweepPoint> combined;                   // converged (κ, α) points, by κ then α
   bool planar_shear = false;                          // the tread shear a 2-vector (MODEL.md §7)
-  // dFy/dα at α = 0 (N per degree) and the pneumatic trail there, from the α sweep's points nearest 0.
+  // With an α sweep: dFy/dα at α = 0 (N per degree; W axes, so < 0) and the pneumatic trail there, by
+  // central differences over α = ±0.2° at the sweep's κ and γ.
   std::optional<double> cornering_stiffness_N_per_deg;
   std::optional<double> pneumatic_trail_at_zero_mm;
   SolveCounters counters;                             // rolling phase (after the footprint)
