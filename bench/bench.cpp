@@ -149,6 +149,10 @@ int main(int argc, char** argv) {
                                lc.completed ? "completed" : "FAILED: " + lc.failure),
                    lc.counters);
     fmt::print("  contact iterations    {:>8}   (outer loop, all points)\n", outer);
+    // Full precision, to check that a change to the solver keeps the answers (1e-6 relative).
+    fmt::print("  Qz (N) at δz (mm):");
+    for (const LoadPoint& p : lc.points) fmt::print(" {:g}:{:.10g}", p.deflection_mm, p.patch.Qz_N);
+    fmt::print("\n");
     fmt::print("  (the load curve's time includes its own inflation: {:.3f} s)\n", lc.inflation.counters.wall_s);
     return r.converged && lc.completed ? 0 : 1;
   } catch (const std::exception& e) {
