@@ -57,7 +57,7 @@ class SparseDirectSolver {
 
   // Solves A x = b by GMRES preconditioned with the last factorisation (of an earlier, nearby matrix):
   // the iteration that lets load steps reuse a factorisation. Returns false (x undefined) when the
-  // residual ‖rhs − A x‖ does not fall below `tolerance` × ‖rhs‖ within max_iterations.
+  // preconditioned residual does not fall below `tolerance` × its initial value within max_iterations.
   bool solve_preconditioned(const SparseMatrix& matrix, const Eigen::VectorXd& rhs, Eigen::VectorXd& x,
                             double tolerance, int max_iterations);
   const LinearSolverStats& stats() const { return stats_; }
