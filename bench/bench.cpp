@@ -6,6 +6,7 @@
 //                                                             (mesh and μ of the case's first rolling study)
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include <fmt/format.h>
@@ -102,6 +103,8 @@ int main(int argc, char** argv) {
   const BlasKernel blas = blas_kernel();
   fmt::print("BLAS: {}, kernel {}{}\n", blas.library, blas.core.empty() ? "unknown" : blas.core,
              blas.forced ? " (set by OPENBLAS_CORETYPE)" : " (detected)");
+  const char* wait_policy = std::getenv("OMP_WAIT_POLICY");
+  fmt::print("OpenMP wait policy: {}\n", wait_policy ? wait_policy : "libgomp's default (spinning)");
   if (argc > 1 && std::string(argv[1]) == "rolling") {
     try {
       return rolling_benchmark(argc > 2 ? argv[2] : std::string(TIREFEM_SOURCE_DIR) + "/examples/175-70R13.toml");
