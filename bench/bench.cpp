@@ -6,6 +6,7 @@
 //                                                             (mesh and μ of the case's first rolling study)
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include <fmt/format.h>
@@ -102,6 +103,8 @@ int main(int argc, char** argv) {
   const BlasKernel blas = blas_kernel();
   fmt::print("BLAS: {}, kernel {}{}\n", blas.library, blas.core.empty() ? "unknown" : blas.core,
              blas.forced ? " (set by OPENBLAS_CORETYPE)" : " (detected)");
+  const char* wait_policy = std::getenv("OMP_WAIT_POLICY");
+  fmt::print("OpenMP wait policy: {}\n", wait_policy ? wait_policy : "libgomp's default (spinning)");
   if (argc > 1 && std::string(argv[1]) == "rolling") {
     try {
       return rolling_benchmark(argc > 2 ? argv[2] : std::string(TIREFEM_SOURCE_DIR) + "/examples/175-70R13.toml");
@@ -149,6 +152,10 @@ int main(int argc, char** argv) {
                                lc.completed ? "completed" : "FAILED: " + lc.failure),
                    lc.counters);
     fmt::print("  contact iterations    {:>8}   (outer loop, all points)\n", outer);
+    // Full precision, to check that a change to the solver keeps the answers (1e-6 relative).
+    fmt::print("  Qz (N) at δz (mm):");
+    for (const LoadPoint& p : lc.points) fmt::print(" {:g}:{:.10g}", p.deflection_mm, p.patch.Qz_N);
+    fmt::print("\n");
     fmt::print("  (the load curve's time includes its own inflation: {:.3f} s)\n", lc.inflation.counters.wall_s);
     return r.converged && lc.completed ? 0 : 1;
   } catch (const std::exception& e) {
