@@ -34,6 +34,7 @@
 #include <gtest/gtest.h>
 
 #include "contact_support.hpp"
+#include "rolling_support.hpp"
 #include "tirefem/analysis/rolling.hpp"
 
 namespace tirefem::verification {
@@ -44,23 +45,8 @@ constexpr double kLoad = 2000.0;
 constexpr double kFriction = 0.7;
 const std::vector<double> kAngles = {0.1, 0.5, 1.0, 2.0, 4.0, 12.0, 25.0, -1.0};
 
-TyreDescription rigid_tyre() {
-  TyreDescription t = example_case().tyre;
-  auto stiffen = [](FaceLayup& f) {
-    for (Ply& p : f.plies) p.cord_modulus *= kStiffening, p.rubber_modulus *= kStiffening;
-    if (f.direct_stiffness) *f.direct_stiffness *= kStiffening;
-  };
-  for (Zone& z : t.zones) {
-    stiffen(z.inner);
-    stiffen(z.outer);
-    z.core_shear_modulus *= kStiffening;
-    z.core_normal_modulus *= kStiffening;
-  }
-  return t;
-}
-
 const TyreDescription& tyre() {
-  static const TyreDescription t = rigid_tyre();
+  static const TyreDescription t = stiffened_tyre(kStiffening);
   return t;
 }
 

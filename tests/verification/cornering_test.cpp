@@ -5,8 +5,8 @@
 // - Signs (ISO 8855 / TYDEX W axes, README): α > 0 (the wheel moving to the left of its heading) gives a
 //   lateral force to the right, Fy < 0, an aligning moment Mz > 0 that turns the wheel towards its
 //   direction of travel, and a positive pneumatic trail −Mz/Fy.
-// - Symmetry: the mesh and the tyre are symmetric about the equatorial plane, so α → −α mirrors the
-//   solution: Fy and Mz change sign, Fx and Fz do not; 1e-6 of Fz (the two runs differ by round-off and
+// - Symmetry: the mesh and the tyre are symmetric about the equatorial plane, so α → −α (and γ → −γ)
+//   mirrors the solution: Fy, Mz and the overturning moment change sign, Fx and Fz do not; 1e-6 of Fz (the two runs differ by round-off and
 //   their iteration paths, the Newton tolerance is 1e-10).
 // - Friction bound (eq. 15 in two dimensions): at every tread point |q_t| ≤ μ qn to round-off (1e-9
 //   relative), so |(Fx, Fy)| ≤ μ Fz.
@@ -25,16 +25,19 @@
 #include <gtest/gtest.h>
 
 #include "contact_support.hpp"
+#include "rolling_support.hpp"
 #include "tirefem/analysis/rolling.hpp"
 
 namespace tirefem::verification {
 namespace {
 
-RollingStateSpec state(RollingStateSpec::Kind kind, double slip, double alpha_deg, const char* name) {
+RollingStateSpec state(RollingStateSpec::Kind kind, double slip, double alpha_deg, const char* name,
+                       double camber_deg = 0.0) {
   RollingStateSpec s;
   s.kind = kind;
   s.slip = slip;
   s.slip_angle_deg = alpha_deg;
+  s.camber_deg = camber_deg;
   s.name = name;
   return s;
 }
@@ -68,7 +71,9 @@ const RollingResult& run(Run which) {
     using K = RollingStateSpec::Kind;
     s.states = {state(K::free, 0.0, 0.0, "free"), state(K::given_slip, 0.02, 0.0, "traction")};
     if (which == Run::full)
-      s.states.insert(s.states.end(), {state(K::given_slip, 0.0, 2.0, "alpha+2"), state(K::given_slip, 0.0, -2.0, "alpha-2")});
+      s.states.insert(s.states.end(), {state(K::given_slip, 0.0, 2.0, "alpha+2"), state(K::given_slip, 0.0, -2.0, "alpha-2"),
+                                       state(K::given_slip, 0.0, 0.0, "camber+2", 2.0),
+                                       state(K::given_slip, 0.0, 0.0, "camber-2", -2.0)});
     const Case& c = example_case();
     it = cache.emplace(which, run_rolling(tyre(which == Run::half), c.tyre, c.inflation, settings(), s)).first;
     std::printf("  rolling study '%s': %.1f s, %d factorisations, %d Newton iterations\n", it->second.name.c_str(),
@@ -115,6 +120,23 @@ TEST(Cornering, OppositeSlipAnglesMirrorTheForces) {
   EXPECT_NEAR(free.aligning_moment_Nmm, 0.0, tol * r.loaded_radius_mm);
 }
 
+// Camber: the road tilted under the +x shoulder (γ > 0, the top of the wheel leaning right) pushes the
+// tyre to the right, Fy < 0 (camber thrust towards the lean); γ → −γ mirrors the solution.
+TEST(Cornering, OppositeCambersMirrorTheForces) {
+  const RollingResult& r = run(Run::full);
+  const RollingFigures& a = named(r, "camber+2").figures;
+  const RollingFigures& b = named(r, "camber-2").figures;
+  std::printf("  γ +2°: Fx %.2f N, Fy %.2f N, Fz %.2f N, Mz %.0f N·mm, overturning %.0f N·mm\n", a.Fx_N, a.Fy_N, a.Fz_N,
+              a.aligning_moment_Nmm, a.overturning_moment_Nmm);
+  EXPECT_LT(a.Fy_N, 0.0);
+  const double tol = 1e-6 * a.Fz_N;
+  EXPECT_NEAR(a.Fy_N, -b.Fy_N, tol);
+  EXPECT_NEAR(a.Fx_N, b.Fx_N, tol);
+  EXPECT_NEAR(a.Fz_N, b.Fz_N, tol);
+  EXPECT_NEAR(a.aligning_moment_Nmm, -b.aligning_moment_Nmm, tol * r.loaded_radius_mm);
+  EXPECT_NEAR(a.overturning_moment_Nmm, -b.overturning_moment_Nmm, tol * r.loaded_radius_mm);
+}
+
 TEST(Cornering, NoPointCarriesMoreThanMuTimesItsPressure) {
   const RollingResult& r = run(Run::full);
   for (const char* name : {"alpha+2", "alpha-2", "traction"}) {
@@ -132,42 +154,14 @@ TEST(Cornering, NoPointCarriesMoreThanMuTimesItsPressure) {
   }
 }
 
-// The rim's reaction (the residual of shell and pressure at the clamped bead DOFs) about the axle centre.
-struct Wrench {
-  Eigen::Vector3d force = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero();
-};
-Wrench rim_reaction(const TyreMesh& tm, double pressure, const Eigen::VectorXd& u) {
-  DofMap dofs(tm.mesh.dof_count());
-  dofs.fix(tm.fixed_dofs);
-  std::vector<std::unique_ptr<Form>> forms;
-  forms.push_back(std::make_unique<ShellInternalForce>(tm.mesh, tm.sections, Kinematics::nonlinear));
-  forms.push_back(std::make_unique<PressureForm>(tm.mesh, tm.pressure_elements, pressure, Kinematics::nonlinear, true));
-  NonlinearProblem problem(dofs, std::move(forms));
-  problem.evaluate(u, 1.0, false);
-  const Eigen::VectorXd& r = problem.system().residual();
-  const Eigen::Vector3d centre(0.0, 0.0, tm.axis_z);
-  Wrench out;
-  for (int d : tm.fixed_dofs) {
-    const int pair = d / 6;
-    const bool outer = d % 6 >= 3;
-    const Eigen::Vector3d x = (outer ? tm.mesh.outer_nodes[pair] : tm.mesh.inner_nodes[pair]) +
-                              u.segment<3>(6 * pair + (outer ? 3 : 0));
-    Eigen::Vector3d f = Eigen::Vector3d::Zero();
-    f[d % 3] = r[d];
-    out.force += f;
-    out.moment += (x - centre).cross(f);
-  }
-  return out;
-}
-
 TEST(Cornering, RimBalancesAllSixComponentsOfTheContact) {
   const RollingResult& r = run(Run::full);
   const TyreMesh& tm = tyre(false);
   const Eigen::Vector3d centre(0.0, 0.0, tm.axis_z);
-  for (const char* name : {"alpha+2", "traction"}) {
+  for (const char* name : {"alpha+2", "camber+2", "traction"}) {
     const RollingStateResult& s = named(r, name);
-    const Wrench rim = rim_reaction(tm, example_case().inflation.pressure, s.displacement);
-    Wrench contact;
+    const RimReaction rim = rim_reaction(tm, example_case().inflation.pressure, s.displacement);
+    RimReaction contact;  // the contact forces and their moment about the axle centre, at the breaker
     for (std::size_t q = 0; q < r.tread_points.size(); ++q) {
       const TreadPoint& p = r.tread_points[q];
       const Eigen::Vector3d x = s.normal[q].position - p.height * p.normal;  // at the breaker

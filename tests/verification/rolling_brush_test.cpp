@@ -60,6 +60,7 @@
 #include <gtest/gtest.h>
 
 #include "contact_support.hpp"
+#include "rolling_support.hpp"
 #include "tirefem/analysis/rolling.hpp"
 
 namespace tirefem::verification {
@@ -70,23 +71,8 @@ constexpr double kLoad = 2000.0;
 constexpr double kFriction = 0.7;
 const std::vector<double> kSlips = {0.002, 0.01, 0.03, 0.08, 0.3, 1.0, -0.03, -0.3};
 
-TyreDescription rigid_tyre() {
-  TyreDescription t = example_case().tyre;
-  auto stiffen = [](FaceLayup& f) {
-    for (Ply& p : f.plies) p.cord_modulus *= kStiffening, p.rubber_modulus *= kStiffening;
-    if (f.direct_stiffness) *f.direct_stiffness *= kStiffening;
-  };
-  for (Zone& z : t.zones) {
-    stiffen(z.inner);
-    stiffen(z.outer);
-    z.core_shear_modulus *= kStiffening;
-    z.core_normal_modulus *= kStiffening;
-  }
-  return t;
-}
-
 const TyreDescription& tyre() {
-  static const TyreDescription t = rigid_tyre();
+  static const TyreDescription t = stiffened_tyre(kStiffening);
   return t;
 }
 

@@ -27,6 +27,7 @@
 #include <gtest/gtest.h>
 
 #include "contact_support.hpp"
+#include "rolling_support.hpp"
 #include "tirefem/analysis/rolling.hpp"
 
 namespace tirefem::verification {
@@ -162,40 +163,12 @@ TEST(Rolling, TractionAndBrakingAreOppositeAndGrowWithSlip) {
   EXPECT_NEAR(drive.figures.Mx_Nmm / (drive.figures.Qy_N * r.loaded_radius_mm), 1.0, 0.1);
 }
 
-// Rim reaction: force and moment about the axle of the residual of the shell and pressure at the bead.
-struct RimReaction {
-  Eigen::Vector3d force = Eigen::Vector3d::Zero();
-  double moment_x = 0.0;
-};
-RimReaction rim_reaction(const TyreMesh& tm, double pressure, const Eigen::VectorXd& u) {
-  DofMap dofs(tm.mesh.dof_count());
-  dofs.fix(tm.fixed_dofs);
-  std::vector<std::unique_ptr<Form>> forms;
-  forms.push_back(std::make_unique<ShellInternalForce>(tm.mesh, tm.sections, Kinematics::nonlinear));
-  forms.push_back(std::make_unique<PressureForm>(tm.mesh, tm.pressure_elements, pressure, Kinematics::nonlinear, true));
-  NonlinearProblem problem(dofs, std::move(forms));
-  problem.evaluate(u, 1.0, false);
-  const Eigen::VectorXd& r = problem.system().residual();
-  RimReaction out;
-  for (int d : tm.fixed_dofs) {
-    const int pair = d / 6;
-    const bool outer = d % 6 >= 3;
-    const Eigen::Vector3d x = (outer ? tm.mesh.outer_nodes[pair] : tm.mesh.inner_nodes[pair]) +
-                              u.segment<3>(6 * pair + (outer ? 3 : 0));
-    Eigen::Vector3d f = Eigen::Vector3d::Zero();
-    f[d % 3] = r[d];  // the rim's force on the tyre: the residual (internal − applied) it has to supply
-    out.force += f;
-    out.moment_x += x.y() * f.z() - (x.z() - tm.axis_z) * f.y();
-  }
-  return out;
-}
-
 void check_axle_loads(const RollingResult& r, std::initializer_list<int> states) {
   for (int i : states) {
     const RollingStateResult& s = nth(r, i);
     const RimReaction rim = rim_reaction(coarse_tyre(), example_case().inflation.pressure, s.displacement);
     // Half model: the rim reaction of half the tyre, doubled; contact + rim = 0.
-    const double qy = -2.0 * rim.force.y(), qz = -2.0 * rim.force.z(), mx = -2.0 * rim.moment_x;
+    const double qy = -2.0 * rim.force.y(), qz = -2.0 * rim.force.z(), mx = -2.0 * rim.moment.x();
     double at_breaker = 0.0, mean_height = 0.0;
     for (std::size_t q = 0; q < r.tread_points.size(); ++q) {
       const TreadPoint& p = r.tread_points[q];
