@@ -4,6 +4,8 @@
 //        tirefem_bench inflation [CASE.toml]                  the inflation alone
 //        tirefem_bench rolling [CASE.toml]                    one rolling state + a 15-point slip sweep
 //                                                             (mesh and μ of the case's first rolling study)
+//        tirefem_bench cornering [CASE.toml]                  one state at α = 2° + an 11-point α sweep on
+//                                                             the full model of that study's mesh
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -95,6 +97,51 @@ int rolling_benchmark(const std::string& file) {
   return r.completed ? 0 : 1;
 }
 
+// The cornering benchmark (issue 11): on the full model of the case's first rolling study's mesh (80 × 46
+// in the example: 44k equations), the 3700 N footprint, free rolling, one state at α = 2° (κ = 0) and an
+// 11-point α sweep −10° … 10° with the axle held (hold = "deflection").
+int cornering_benchmark(const std::string& file) {
+  using namespace tirefem;
+  const auto t0 = std::chrono::steady_clock::now();
+  const Case c = read_case(file);
+  RollingStudy study = c.rolling.empty() ? RollingStudy{} : c.rolling.front();
+  MeshSettings mesh = study.mesh.value_or(c.mesh);
+  mesh.half_model = false;
+  const TyreMesh tm = build_tyre_mesh(c.tyre, mesh);
+  study.name = "bench";
+  study.tread_shear.reset();  // planar on the full model
+  RollingStateSpec state;
+  state.kind = RollingStateSpec::Kind::given_slip;
+  state.slip_angle_deg = 2.0;
+  study.states = {RollingStateSpec{}, state};
+  study.sweep.reset();
+  study.combined.reset();
+  study.angle_sweep = SlipAngleSweep{-10.0, 10.0, 11, 0.0, 0.0, false};
+  fmt::print("tirefem cornering benchmark: {} ({} threads), {} x {} full model, {} DOF (free {}), μ = {}\n", c.title,
+             omp_get_max_threads(), mesh.circumferential_elements, mesh.meridional_elements, tm.mesh.dof_count(),
+             tm.mesh.dof_count() - static_cast<int>(tm.fixed_dofs.size()), study.friction);
+  const RollingResult r = run_rolling(tm, c.tyre, c.inflation, c.contact, study);
+  print_counters("footprint (inflation + static loading to 3700 N)", r.footprint.counters);
+  print_counters(fmt::format("rolling phase: {}", r.completed ? "completed" : "FAILED: " + r.failure), r.counters);
+  RollingSolveCounts sweep;
+  for (const SweepPoint& p : r.angle_sweep) {
+    sweep.newton_iterations += p.counts.newton_iterations;
+    sweep.factorizations += p.counts.factorizations;
+    sweep.contact_iterations += p.counts.contact_iterations;
+    sweep.time_s += p.counts.time_s;
+  }
+  if (!r.states.empty()) print_rolling_counts("free rolling (secant on Rk)", r.states.front().counts);
+  for (std::size_t i = 1; i < r.states.size(); ++i)
+    print_rolling_counts(fmt::format("one state, α = {:g}°", r.states[i].spec.slip_angle_deg), r.states[i].counts);
+  print_rolling_counts(fmt::format("α sweep, {} points", r.angle_sweep.size()), sweep);
+  if (r.cornering_stiffness_N_per_deg)
+    fmt::print("cornering stiffness dFy/dα {:.1f} N/deg, trail {:.2f} mm (at α = 0, ±0.2°)\n",
+               *r.cornering_stiffness_N_per_deg, r.pneumatic_trail_at_zero_mm.value_or(0.0));
+  fmt::print("total                        {:.3f} s\n",
+             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  return r.completed ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -105,6 +152,14 @@ int main(int argc, char** argv) {
              blas.forced ? " (set by OPENBLAS_CORETYPE)" : " (detected)");
   const char* wait_policy = std::getenv("OMP_WAIT_POLICY");
   fmt::print("OpenMP wait policy: {}\n", wait_policy ? wait_policy : "libgomp's default (spinning)");
+  if (argc > 1 && std::string(argv[1]) == "cornering") {
+    try {
+      return cornering_benchmark(argc > 2 ? argv[2] : std::string(TIREFEM_SOURCE_DIR) + "/examples/175-70R13.toml");
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "tirefem_bench: %s\n", e.what());
+      return 2;
+    }
+  }
   if (argc > 1 && std::string(argv[1]) == "rolling") {
     try {
       return rolling_benchmark(argc > 2 ? argv[2] : std::string(TIREFEM_SOURCE_DIR) + "/examples/175-70R13.toml");
