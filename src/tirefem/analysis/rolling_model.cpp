@@ -252,9 +252,10 @@ Eigen::VectorXd RollingModel::predict(const Eigen::Vector3d& p, const Eigen::Vec
   if (!a || !b) return start;
   const Eigen::Vector3d ab = b->parameters - a->parameters, ap = p - a->parameters;
   const double t = ap.dot(ab) / ab.squaredNorm();
-  // At most one spacing beyond the nearest state (t = −1 continues a sweep with equal steps); further
-  // (measured: α = −4° extrapolated from α = 0 and +2°) the secant is worse than the nearest state itself.
-  if (t < -1.0 || t > 2.0 || (ap - t * ab).norm() > 0.25 * ap.norm()) return start;
+  // At most about one spacing beyond the nearest state (t ≈ −1 continues a sweep with equal steps, up to
+  // round-off on either side of −1); two spacings (measured: α = −4° extrapolated from α = 0 and +2°) are
+  // worse than the nearest state itself.
+  if (t < -1.5 || t > 2.0 || (ap - t * ab).norm() > 0.25 * ap.norm()) return start;
   return a->u + t * (b->u - a->u);
 }
 
