@@ -56,6 +56,18 @@ void print_rolling_counts(const std::string& name, const tirefem::RollingSolveCo
              c.newton_iterations, c.factorizations, c.contact_iterations, c.time_s);
 }
 
+// The solver counts of a sweep's points, added up.
+tirefem::RollingSolveCounts sweep_counts(const std::vector<tirefem::SweepPoint>& points) {
+  tirefem::RollingSolveCounts sum;
+  for (const tirefem::SweepPoint& p : points) {
+    sum.newton_iterations += p.counts.newton_iterations;
+    sum.factorizations += p.counts.factorizations;
+    sum.contact_iterations += p.counts.contact_iterations;
+    sum.time_s += p.counts.time_s;
+  }
+  return sum;
+}
+
 // The rolling benchmark: on the case's rolling mesh (80 × 46 in the example), the footprint at
 // 3700 N, free rolling, one state with stick and slip (κ = 0.02) and a 15-point slip sweep −0.15 … 0.15.
 int rolling_benchmark(const std::string& file) {
@@ -78,13 +90,7 @@ int rolling_benchmark(const std::string& file) {
   const RollingResult r = run_rolling(tm, c.tyre, c.inflation, c.contact, study);
   print_counters("footprint (inflation + static loading to 3700 N)", r.footprint.counters);
   print_counters(fmt::format("rolling phase: {}", r.completed ? "completed" : "FAILED: " + r.failure), r.counters);
-  RollingSolveCounts sweep;
-  for (const SweepPoint& p : r.sweep) {
-    sweep.newton_iterations += p.counts.newton_iterations;
-    sweep.factorizations += p.counts.factorizations;
-    sweep.contact_iterations += p.counts.contact_iterations;
-    sweep.time_s += p.counts.time_s;
-  }
+  const RollingSolveCounts sweep = sweep_counts(r.sweep);
   if (r.effective_rolling_radius_mm)
     fmt::print("free rolling: Re {:.3f} mm, slip stiffness {:.0f} N\n", *r.effective_rolling_radius_mm,
                r.slip_stiffness_N.value_or(0.0));
@@ -123,13 +129,7 @@ int cornering_benchmark(const std::string& file) {
   const RollingResult r = run_rolling(tm, c.tyre, c.inflation, c.contact, study);
   print_counters("footprint (inflation + static loading to 3700 N)", r.footprint.counters);
   print_counters(fmt::format("rolling phase: {}", r.completed ? "completed" : "FAILED: " + r.failure), r.counters);
-  RollingSolveCounts sweep;
-  for (const SweepPoint& p : r.angle_sweep) {
-    sweep.newton_iterations += p.counts.newton_iterations;
-    sweep.factorizations += p.counts.factorizations;
-    sweep.contact_iterations += p.counts.contact_iterations;
-    sweep.time_s += p.counts.time_s;
-  }
+  const RollingSolveCounts sweep = sweep_counts(r.angle_sweep);
   if (!r.states.empty()) print_rolling_counts("free rolling (secant on Rk)", r.states.front().counts);
   for (std::size_t i = 1; i < r.states.size(); ++i)
     print_rolling_counts(fmt::format("one state, α = {:g}°", r.states[i].spec.slip_angle_deg), r.states[i].counts);

@@ -91,6 +91,17 @@ const RollingStateResult& named(const RollingResult& r, const std::string& name)
   throw std::runtime_error("no state " + name);
 }
 
+// b is the mirror image of a in the equatorial plane: Fy, Mz and the overturning moment change sign, Fx
+// and Fz do not (1e-6 of Fz, and of Fz × Rd for the moments).
+void expect_mirrored(const RollingFigures& a, const RollingFigures& b, double loaded_radius) {
+  const double tol = 1e-6 * a.Fz_N;
+  EXPECT_NEAR(a.Fy_N, -b.Fy_N, tol);
+  EXPECT_NEAR(a.Fx_N, b.Fx_N, tol);
+  EXPECT_NEAR(a.Fz_N, b.Fz_N, tol);
+  EXPECT_NEAR(a.aligning_moment_Nmm, -b.aligning_moment_Nmm, tol * loaded_radius);
+  EXPECT_NEAR(a.overturning_moment_Nmm, -b.overturning_moment_Nmm, tol * loaded_radius);
+}
+
 TEST(Cornering, SlipAngleGivesLateralForceAndAligningMomentOfTheIsoSigns) {
   const RollingResult& r = run(Run::full);
   ASSERT_TRUE(r.completed) << r.failure;
@@ -108,13 +119,9 @@ TEST(Cornering, OppositeSlipAnglesMirrorTheForces) {
   const RollingResult& r = run(Run::full);
   const RollingFigures& a = named(r, "alpha+2").figures;
   const RollingFigures& b = named(r, "alpha-2").figures;
-  const double tol = 1e-6 * a.Fz_N;
-  EXPECT_NEAR(a.Fy_N, -b.Fy_N, tol);
-  EXPECT_NEAR(a.Fx_N, b.Fx_N, tol);
-  EXPECT_NEAR(a.Fz_N, b.Fz_N, tol);
-  EXPECT_NEAR(a.aligning_moment_Nmm, -b.aligning_moment_Nmm, tol * r.loaded_radius_mm);
-  EXPECT_NEAR(a.overturning_moment_Nmm, -b.overturning_moment_Nmm, tol * r.loaded_radius_mm);
+  expect_mirrored(a, b, r.loaded_radius_mm);
   // Straight ahead the full model has no lateral force (its symmetric solution).
+  const double tol = 1e-6 * a.Fz_N;
   const RollingFigures& free = named(r, "free").figures;
   EXPECT_NEAR(free.Fy_N, 0.0, tol);
   EXPECT_NEAR(free.aligning_moment_Nmm, 0.0, tol * r.loaded_radius_mm);
@@ -129,12 +136,7 @@ TEST(Cornering, OppositeCambersMirrorTheForces) {
   std::printf("  γ +2°: Fx %.2f N, Fy %.2f N, Fz %.2f N, Mz %.0f N·mm, overturning %.0f N·mm\n", a.Fx_N, a.Fy_N, a.Fz_N,
               a.aligning_moment_Nmm, a.overturning_moment_Nmm);
   EXPECT_LT(a.Fy_N, 0.0);
-  const double tol = 1e-6 * a.Fz_N;
-  EXPECT_NEAR(a.Fy_N, -b.Fy_N, tol);
-  EXPECT_NEAR(a.Fx_N, b.Fx_N, tol);
-  EXPECT_NEAR(a.Fz_N, b.Fz_N, tol);
-  EXPECT_NEAR(a.aligning_moment_Nmm, -b.aligning_moment_Nmm, tol * r.loaded_radius_mm);
-  EXPECT_NEAR(a.overturning_moment_Nmm, -b.overturning_moment_Nmm, tol * r.loaded_radius_mm);
+  expect_mirrored(a, b, r.loaded_radius_mm);
 }
 
 TEST(Cornering, NoPointCarriesMoreThanMuTimesItsPressure) {
