@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -88,6 +90,58 @@ InflationResult run_inflation(const TyreMesh& tm, const InflationSettings& setti
   c.load_steps = static_cast<int>(path.steps.size());
   c.cutbacks = path.cutbacks;
   c.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return result;
+}
+
+Eigen::VectorXd turned_onto(const TyreMesh& from, const Eigen::VectorXd& displacement, const TyreMesh& to) {
+  if (from.mesh.u_values != to.mesh.u_values || from.half_model != to.half_model)
+    throw std::invalid_argument("turned_onto: the meshes' meridional stations differ");
+  // φ of a point (x, r sin φ, axis_z − r cos φ) (mesh/revolution_mesh.hpp); a rotation by Δ about x
+  // takes φ to φ + Δ, and so the displacement of a node row onto a row Δ further round.
+  const auto angle = [](const Eigen::Vector3d& p, double axis_z) { return std::atan2(p.y(), axis_z - p.z()); };
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(to.mesh.dof_count());
+  for (int j = 0; j < to.mesh.v_nodes(); ++j)
+    for (int i = 0; i < to.mesh.u_nodes(); ++i) {
+      const int p = to.mesh.pair_index(i, j), q = from.mesh.pair_index(i, 0);
+      const double turn = angle(to.mesh.inner_nodes[p], to.axis_z) - angle(from.mesh.inner_nodes[q], from.axis_z);
+      const Eigen::Matrix3d r = Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitX()).toRotationMatrix();
+      u.segment<3>(6 * p) = r * displacement.segment<3>(6 * q);
+      u.segment<3>(6 * p + 3) = r * displacement.segment<3>(6 * q + 3);
+    }
+  return u;
+}
+
+InflationResult run_inflation_from(const TyreMesh& tm, const InflationSettings& settings, const TyreMesh& from,
+                                   const Eigen::VectorXd& inflated_from, const ProgressSink& progress) {
+  if (settings.linear) return run_inflation(tm, settings, progress);
+  const auto t0 = std::chrono::steady_clock::now();
+  InflationResult result;
+  result.kinematics = Kinematics::nonlinear;
+  result.pressure = settings.pressure;
+  result.displacement = turned_onto(from, inflated_from, tm);
+  auto problem = inflation_problem(tm, settings.pressure, Kinematics::nonlinear);
+  if (progress)
+    progress(fmt::format("inflation to {} MPa (nonlinear theory): {} equations, from the inflated {} x {} mesh",
+                         settings.pressure, problem->dofs().equation_count(), from.mesh.v_elements(),
+                         from.mesh.u_elements()));
+  NewtonSettings newton_settings;
+  newton_settings.max_iterations = settings.max_newton_iterations;
+  newton_settings.residual_tolerance = settings.residual_tolerance;
+  newton_settings.reuse_factorization = true;
+  NewtonSolver newton(*problem, newton_settings);
+  const NewtonOutcome out = newton.solve(result.displacement, 1.0);
+  if (progress) {
+    std::string residuals;
+    for (double r : out.residual_history) residuals += fmt::format(" {:.1e}", r);
+    progress(fmt::format("  load factor 1.0000: {} Newton iterations, residuals{}{}", out.iterations, residuals,
+                         out.converged ? "" : " (not converged: the pressure ramp from the unloaded tyre follows)"));
+  }
+  if (!out.converged) return run_inflation(tm, settings, progress);
+  add_counters(result.counters, newton, *problem);
+  result.converged = true;
+  result.steps = {LoadStepRecord{1.0, out.iterations, out.relative_residual}};
+  result.counters.load_steps = 1;
+  result.counters.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;
 }
 
