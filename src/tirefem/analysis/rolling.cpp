@@ -173,7 +173,8 @@ std::vector<SweepTarget> outward(std::vector<double> values, Make make) {
 // two extra solves near the straight-ahead state, where the patch still sticks almost everywhere (the
 // sweep's own points lie in the nonlinear range). Not sweep points: not reported as such.
 constexpr double kProbeAngle = 0.2;  // degrees
-void cornering_stiffness(RollingModel& model, const RollingStudy& study, RollingResult& r) {
+void cornering_stiffness(RollingModel& model, const RollingStudy& study, RollingResult& r,
+                         const ProgressSink& progress) {
   const SlipAngleSweep& sw = *study.angle_sweep;
   FrictionLaw law;
   law.friction = study.friction;
@@ -186,6 +187,15 @@ void cornering_stiffness(RollingModel& model, const RollingStudy& study, Rolling
   const double dfy = plus.figures.Fy_N - minus.figures.Fy_N;
   if (dfy != 0.0)
     r.pneumatic_trail_at_zero_mm = -(plus.figures.aligning_moment_Nmm - minus.figures.aligning_moment_Nmm) / dfy;
+  if (!progress || r.footprint.points.empty()) return;
+  // Beside the published ranges for radial passenger tyres at their nominal load (issue 11).
+  const PatchFigures& patch = r.footprint.points.back().patch;
+  progress(fmt::format("  cornering stiffness at α = 0: {:.0f} N/deg = {:.3f} Fz per degree (radial passenger "
+                       "tyres: about 0.11–0.19); pneumatic trail {:.1f} mm = {:.2f} of the patch length {:.0f} mm "
+                       "(typically about 1/6)",
+                       -*r.cornering_stiffness_N_per_deg, -*r.cornering_stiffness_N_per_deg / patch.Qz_N,
+                       r.pneumatic_trail_at_zero_mm.value_or(0.0),
+                       r.pneumatic_trail_at_zero_mm.value_or(0.0) / patch.patch_length_mm, patch.patch_length_mm));
 }
 
 }  // namespace
@@ -333,7 +343,7 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
     ok = run_sweep(model, study, r, targets, sw.hold_load, r.angle_sweep, "α sweep", progress) && ok;
     std::sort(r.angle_sweep.begin(), r.angle_sweep.end(),
               [](const SweepPoint& a, const SweepPoint& b) { return a.slip_angle_deg < b.slip_angle_deg; });
-    cornering_stiffness(model, study, r);
+    cornering_stiffness(model, study, r, progress);
   }
   if (study.combined) {
     // Each slip κ a branch outwards in α from the point nearest α = 0.
