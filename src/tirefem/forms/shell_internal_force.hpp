@@ -13,9 +13,9 @@ Eigen::Matrix<double, 3, 8> element_current(const ShellMesh& mesh, int element,
                                             const Eigen::VectorXd& displacement);
 
 // Reference and current positions of an element's nodes relative to its reference centroid (the reference
-// alone: centred_reference). The element
-// is translation-invariant, and it recovers u as current − reference: with positions near the origin
-// that difference keeps its digits (at tyre coordinates, ~300 mm, it would not).
+// alone: centred_reference). The element is translation-invariant, and it recovers u as current −
+// reference: with positions near the origin that difference keeps its digits (at tyre coordinates,
+// ~300 mm, it would not).
 NodeMatrix centred_reference(const ShellMesh& mesh, int element);
 struct ElementConfiguration {
   NodeMatrix reference, current;
