@@ -3,7 +3,7 @@
 #include <string>
 
 #include "tirefem/case/case.hpp"
-#include "tirefem/element/strain_component.hpp"
+#include "tirefem/element/element_geometry.hpp"
 #include "tirefem/solver/newton.hpp"
 #include "tirefem/tyre/tyre_mesh.hpp"
 

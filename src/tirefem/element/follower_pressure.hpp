@@ -1,7 +1,7 @@
 #pragma once
 // Follower pressure on the inner (carcass) face of a three-layer element: the load acts along the current
 // normal of the face, pointing from the inner towards the outer face, on the current area.
-#include "tirefem/element/strain_component.hpp"
+#include "tirefem/element/element_geometry.hpp"
 
 namespace tirefem {
 

@@ -7,7 +7,7 @@
 // is tied at the corners (Betsch–Stein), so thin interlayers and curved meshes do not lock.
 // [Kτ] = diag([Kτ^m1], [Kτ^m2]) + [K3].
 #include "tirefem/element/section.hpp"
-#include "tirefem/element/strain_component.hpp"
+#include "tirefem/element/element_geometry.hpp"
 
 namespace tirefem {
 
@@ -17,10 +17,16 @@ struct ElementResponse {
   ElementMatrix tangent = ElementMatrix::Zero();  // ∂²Π/∂f²
 };
 
-// Reference and current nodal positions (columns 0–3 inner face, 4–7 outer face).
-ElementResponse three_layer_element(const NodeMatrix& reference, const NodeMatrix& current,
-                                    const ElementSection& section, Kinematics kinematics,
-                                    bool with_tangent = true);
+// Reference and current nodal positions (columns 0–3 inner face, 4–7 outer face); `geometry` is
+// element_geometry(reference), which a form computes once.
+ElementResponse three_layer_element(const ElementGeometry& geometry, const NodeMatrix& reference,
+                                    const NodeMatrix& current, const ElementSection& section,
+                                    Kinematics kinematics, bool with_tangent = true);
+inline ElementResponse three_layer_element(const NodeMatrix& reference, const NodeMatrix& current,
+                                           const ElementSection& section, Kinematics kinematics,
+                                           bool with_tangent = true) {
+  return three_layer_element(element_geometry(reference), reference, current, section, kinematics, with_tangent);
+}
 
 // Strains and stresses at one point of the element, in the local frame (1 = ξ direction, 2, 3 = normal).
 struct ElementPointState {

@@ -21,11 +21,13 @@ void PressureForm::assemble(const FormInput& input, SparseSystem& system) const 
     const int e = elements_[i];
     const ElementConfiguration x = element_configuration(mesh_, e, input.displacement);
     PressureLoad load = follower_pressure(x.reference, x.current, input.load_factor * pressure_, kinematics_, input.with_tangent);
-    // Residual = internal − external: the load enters with a minus sign, and so does its stiffness.
-    const ElementVector f = -load.force;
-    ElementMatrix k = -load.tangent;
+    // Residual = internal − external: the load enters with a minus sign, and so does its stiffness. The
+    // load acts on the inner face: only its 4 nodes' block (the first 12 DOFs) is added.
+    const Eigen::Matrix<double, 12, 1> f = -load.force.head<12>();
+    Eigen::Matrix<double, 12, 12> k = -load.tangent.topLeftCorner<12, 12>();
     if (symmetrize_) k = 0.5 * (k + k.transpose()).eval();
-    batch.set(i, mesh_.element_dofs(e), f, k, input.with_tangent);
+    const std::array<int, 24> dofs = mesh_.element_dofs(e);
+    batch.set(i, std::span<const int>(dofs.data(), 12), f, k, input.with_tangent);
   }
   system.add(batch);
 }

@@ -13,11 +13,16 @@ Eigen::Matrix<double, 3, 8> element_current(const ShellMesh& mesh, int element,
   return x;
 }
 
+NodeMatrix centred_reference(const ShellMesh& mesh, int element) {
+  NodeMatrix x = mesh.element_reference(element);
+  const Eigen::Vector3d centroid = x.rowwise().mean();
+  x.colwise() -= centroid;
+  return x;
+}
+
 ElementConfiguration element_configuration(const ShellMesh& mesh, int element, const Eigen::VectorXd& u) {
   ElementConfiguration c;
-  c.reference = mesh.element_reference(element);
-  const Eigen::Vector3d centroid = c.reference.rowwise().mean();
-  c.reference.colwise() -= centroid;
+  c.reference = centred_reference(mesh, element);
   c.current = c.reference;
   const auto dofs = mesh.element_dofs(element);
   for (int k = 0; k < 8; ++k)
@@ -30,6 +35,9 @@ ShellInternalForce::ShellInternalForce(const ShellMesh& mesh, const std::vector<
     : mesh_(mesh), sections_(sections), kinematics_(kinematics) {
   if (static_cast<int>(sections.size()) != mesh.element_count())
     throw std::invalid_argument("one section per element is required");
+  geometry_.resize(mesh.element_count());
+#pragma omp parallel for schedule(static)
+  for (int e = 0; e < mesh.element_count(); ++e) geometry_[e] = element_geometry(centred_reference(mesh, e));
 }
 
 void ShellInternalForce::add_pattern(PatternBuilder& pattern) const {
@@ -44,7 +52,7 @@ void ShellInternalForce::assemble(const FormInput& input, SparseSystem& system) 
     const auto dofs = mesh_.element_dofs(e);
     const ElementConfiguration x = element_configuration(mesh_, e, input.displacement);
     const ElementResponse r =
-        three_layer_element(x.reference, x.current, sections_[e], kinematics_, input.with_tangent);
+        three_layer_element(geometry_[e], x.reference, x.current, sections_[e], kinematics_, input.with_tangent);
     batch.set(e, dofs, r.force, r.tangent, input.with_tangent);
   }
   system.add(batch);
@@ -57,8 +65,8 @@ std::optional<EnergyChange> ShellInternalForce::energy_change(const Eigen::Vecto
 #pragma omp parallel for schedule(static)
   for (int e = 0; e < n; ++e) {
     const ElementConfiguration a = element_configuration(mesh_, e, from), b = element_configuration(mesh_, e, to);
-    const double ea = three_layer_element(a.reference, a.current, sections_[e], kinematics_, false).energy;
-    const double eb = three_layer_element(b.reference, b.current, sections_[e], kinematics_, false).energy;
+    const double ea = three_layer_element(geometry_[e], a.reference, a.current, sections_[e], kinematics_, false).energy;
+    const double eb = three_layer_element(geometry_[e], b.reference, b.current, sections_[e], kinematics_, false).energy;
     parts[e] = {eb - ea, std::abs(ea) + std::abs(eb)};
   }
   EnergyChange total;

@@ -12,9 +12,11 @@ namespace tirefem {
 Eigen::Matrix<double, 3, 8> element_current(const ShellMesh& mesh, int element,
                                             const Eigen::VectorXd& displacement);
 
-// Reference and current positions of an element's nodes relative to its reference centroid. The element
-// is translation-invariant, and it recovers u as current − reference: with positions near the origin
-// that difference keeps its digits (at tyre coordinates, ~300 mm, it would not).
+// Reference and current positions of an element's nodes relative to its reference centroid (the reference
+// alone: centred_reference). The element is translation-invariant, and it recovers u as current −
+// reference: with positions near the origin that difference keeps its digits (at tyre coordinates,
+// ~300 mm, it would not).
+NodeMatrix centred_reference(const ShellMesh& mesh, int element);
 struct ElementConfiguration {
   NodeMatrix reference, current;
 };
@@ -36,6 +38,7 @@ class ShellInternalForce final : public Form {
   const ShellMesh& mesh_;
   const std::vector<ElementSection>& sections_;
   Kinematics kinematics_;
+  std::vector<ElementGeometry> geometry_;  // of the centred reference, per element (computed once)
 };
 
 }  // namespace tirefem

@@ -1,23 +1,15 @@
 #pragma once
+// The element's strains as they were formed before the assembly was sped up (kept for the tests only, as
+// the reference the faster element must reproduce to round-off).
 // A Green–Lagrange strain component of the three-layer element written as
 //   E = ½ (a·b − A·B),   a = Σ α_k x_k,  b = Σ β_k x_k  (current),  A, B the same on the reference,
 // over the element's 8 nodes. Every strain of the element (face membrane strains, interlayer covariant
 // shears and thickness strain) has this form, so value, gradient and Hessian come from one place and the
 // tangent is exact by construction. Linear combinations (assumed-strain interpolation, change of frame)
 // stay in the same type.
-#include <Eigen/Dense>
+#include "tirefem/element/element_geometry.hpp"
 
-namespace tirefem {
-
-inline constexpr int kElementNodes = 8;
-inline constexpr int kElementDofs = 24;
-
-using ElementVector = Eigen::Matrix<double, kElementDofs, 1>;
-using ElementMatrix = Eigen::Matrix<double, kElementDofs, kElementDofs>;
-using NodeWeights = Eigen::Matrix<double, kElementNodes, 1>;
-using NodeMatrix = Eigen::Matrix<double, 3, kElementNodes>;  // columns: node positions
-
-enum class Kinematics { nonlinear, linear };
+namespace tirefem::reference {
 
 struct StrainComponent {
   double value = 0.0;
@@ -62,4 +54,4 @@ inline StrainComponent bilinear_strain(const NodeWeights& alpha, const NodeWeigh
   return e;
 }
 
-}  // namespace tirefem
+}  // namespace tirefem::reference
