@@ -7,6 +7,7 @@
 
 #include "tirefem/element/follower_pressure.hpp"
 #include "tirefem/element/three_layer_element.hpp"
+#include "../element_test_section.hpp"
 
 namespace tirefem {
 namespace {
@@ -32,15 +33,6 @@ NodeMatrix randomly_deformed(const NodeMatrix& x, double amplitude, unsigned see
   return y;
 }
 
-ElementSection anisotropic_section() {
-  ElementSection s;
-  s.inner_face << 3000, 300, 50, 300, 900, -40, 50, -40, 400;
-  s.outer_face << 5000, 2500, 0, 2500, 2000, 0, 0, 0, 2200;
-  s.core_shear_modulus = 1.5;
-  s.core_normal_modulus = 100;
-  return s;
-}
-
 template <class ForceOf>
 double max_relative_tangent_error(const NodeMatrix& x, const ElementMatrix& k, ForceOf force_of) {
   const double h = 1e-6;
@@ -56,7 +48,7 @@ double max_relative_tangent_error(const NodeMatrix& x, const ElementMatrix& k, F
 
 TEST(ElementTangent, NonlinearInternalForceMatchesFiniteDifferences) {
   const NodeMatrix x0 = curved_element();
-  const ElementSection s = anisotropic_section();
+  const ElementSection s = anisotropic_test_section();
   for (unsigned seed : {1u, 2u, 3u}) {
     const NodeMatrix x = randomly_deformed(x0, 1.5, seed);
     const ElementResponse r = three_layer_element(x0, x, s, Kinematics::nonlinear);
@@ -72,8 +64,8 @@ TEST(ElementTangent, EachLayerSeparately) {
   const NodeMatrix x = randomly_deformed(x0, 1.0, 7);
   for (int layer = 0; layer < 3; ++layer) {
     ElementSection s;
-    if (layer == 0) s.inner_face = anisotropic_section().inner_face;
-    if (layer == 1) s.outer_face = anisotropic_section().outer_face;
+    if (layer == 0) s.inner_face = anisotropic_test_section().inner_face;
+    if (layer == 1) s.outer_face = anisotropic_test_section().outer_face;
     if (layer == 2) {
       s.core_shear_modulus = 1.0;
       s.core_normal_modulus = 50.0;
@@ -89,7 +81,7 @@ TEST(ElementTangent, EachLayerSeparately) {
 TEST(ElementTangent, ForceIsGradientOfEnergy) {
   const NodeMatrix x0 = curved_element();
   const NodeMatrix x = randomly_deformed(x0, 1.0, 11);
-  const ElementSection s = anisotropic_section();
+  const ElementSection s = anisotropic_test_section();
   const ElementResponse r = three_layer_element(x0, x, s, Kinematics::nonlinear, false);
   const double h = 1e-5;
   ElementVector fd;
@@ -106,7 +98,7 @@ TEST(ElementTangent, ForceIsGradientOfEnergy) {
 
 TEST(ElementTangent, LinearTheoryIsLinear) {
   const NodeMatrix x0 = curved_element();
-  const ElementSection s = anisotropic_section();
+  const ElementSection s = anisotropic_test_section();
   const NodeMatrix x = randomly_deformed(x0, 1.0, 5);
   const ElementResponse r = three_layer_element(x0, x, s, Kinematics::linear);
   ElementVector u;

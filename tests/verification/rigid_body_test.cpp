@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "verification_support.hpp"
+#include "../element_test_section.hpp"
 
 namespace tirefem::verification {
 namespace {
@@ -25,15 +26,6 @@ NodeMatrix curved_element() {
     x.col(a + 4) = Eigen::Vector3d(xs[a] - 0.04 * xs[a], ys[a] - 0.02 * ys[a], z + 4.0);
   }
   return x;
-}
-
-ElementSection anisotropic_section() {
-  ElementSection s;
-  s.inner_face << 3000, 300, 50, 300, 900, -40, 50, -40, 400;
-  s.outer_face << 5000, 2500, 0, 2500, 2000, 0, 0, 0, 2200;
-  s.core_shear_modulus = 1.5;
-  s.core_normal_modulus = 100;
-  return s;
 }
 
 struct RigidMotion {
@@ -79,7 +71,7 @@ double max_abs_strain(const ElementPointState& st) {
 TEST(RigidBody, CurvedElementHasNoStrainAndNoForce) {
   const NodeMatrix x0 = curved_element();
   double worst_force = 0.0, worst_strain = 0.0;
-  for (const ElementSection& s : {anisotropic_section(),
+  for (const ElementSection& s : {anisotropic_test_section(),
                                   emulated_section({2.0e5, 0.3, 4.0})}) {
     const double f_ref = unit_strain_force(x0, s);
     ASSERT_GT(f_ref, 0.0);
@@ -112,7 +104,7 @@ TEST(RigidBody, CurvedElementHasNoStrainAndNoForce) {
 TEST(RigidBody, LinearTheoryTranslationAndInfinitesimalRotation) {
   // The linear theory is invariant under translations and infinitesimal rotations u = ω × X only.
   const NodeMatrix x0 = curved_element();
-  const ElementSection s = anisotropic_section();
+  const ElementSection s = anisotropic_test_section();
   const double f_ref = unit_strain_force(x0, s);
   NodeMatrix x = x0;
   const Eigen::Vector3d omega(0.3, -0.2, 0.5), c(1, 2, 3);
@@ -125,7 +117,7 @@ TEST(RigidBody, LinearTheoryTranslationAndInfinitesimalRotation) {
 TEST(RigidBody, CurvedMeshHasNoResidual) {
   const ShellMesh mesh = revolution_mesh(torus_meridian(60.0, 230.0), {0.0, 9.0, 25.0, 31.0},
                                          {-0.2, -0.13, 0.05, 0.11}, false, -2.0, 3.0);
-  const std::vector<ElementSection> sections(mesh.element_count(), anisotropic_section());
+  const std::vector<ElementSection> sections(mesh.element_count(), anisotropic_test_section());
   std::vector<std::unique_ptr<Form>> forms;
   forms.push_back(std::make_unique<ShellInternalForce>(mesh, sections, Kinematics::nonlinear));
   NonlinearProblem problem(DofMap(mesh.dof_count()), std::move(forms));
