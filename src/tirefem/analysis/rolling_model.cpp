@@ -85,11 +85,11 @@ RollingModel::RollingModel(const TyreMesh& tm, const TyreDescription& tyre, cons
   result.tread_points = contact_->points();
 }
 
-Eigen::Vector3d RollingModel::parameters(const WheelSlip& slip) const {
-  return {tm_.axis_z / slip.rolling_radius, std::tan(slip.slip_angle), slip.camber};
+RollingModel::Parameters RollingModel::parameters(const WheelSlip& slip) const {
+  return {tm_.axis_z / slip.rolling_radius, std::tan(slip.slip_angle), slip.camber, deflection_ / tm_.axis_z};
 }
 
-void RollingModel::apply(const Eigen::Vector3d& p) {
+void RollingModel::apply(const Parameters& p) {
   friction_->set_rolling_radius(tm_.axis_z / p[0]);
   // Per unit of the support's travel it moves sideways by tan α along +x (reversed travel: along −x).
   friction_->set_lateral_drift(result_.reverse ? -p[1] : p[1]);
@@ -103,13 +103,13 @@ RollingModel::Solved RollingModel::solve(const FrictionLaw& law, const WheelSlip
   const int newton0 = newton_->total_iterations();
   Solved s;
   const bool full_slip = law.mode == FrictionLaw::Mode::full_slip;
-  const Eigen::Vector3d target = parameters(slip);
+  const Parameters target = parameters(slip);
   const Known* from = full_slip ? nullptr : from_last && !known_.empty() ? &known_.back() : nearest(target);
   double done = 0.0, step = 1.0;  // continuation parameter from the start state (0) to the target (1)
   Eigen::VectorXd u = from ? from->u : base_;
   Eigen::VectorXd previous_u = u;  // full slip: the converged stage before u, at previous_t
   double previous_t = 0.0;
-  const Eigen::Vector3d p0 = from ? from->parameters : target;
+  const Parameters p0 = from ? from->parameters : target;
   // A slip angle or camber far from the start state turns much of the patch from sticking to sliding
   // at once: steps of at most kAngleStep in tan α and γ, doubled after an easy one. Measured on the
   // 40 × 12 full model (Newton iterations, one step against these): α 0 → 2° 32 → 15, 0 → −4° 131 → 44,
@@ -121,9 +121,9 @@ RollingModel::Solved RollingModel::solve(const FrictionLaw& law, const WheelSlip
   while (done < 1.0) {
     const double t = std::min(1.0, done + step);
     FrictionLaw stage = law;
-    Eigen::Vector3d p = target;
+    Parameters p = target;
     if (full_slip) stage.friction = law.friction * t;
-    else p = p0 + t * (target - p0);
+    else p.head<3>() = p0.head<3>() + t * (target.head<3>() - p0.head<3>());  // at the model's δz
     friction_->set_law(stage);
     apply(p);
     Eigen::VectorXd trial = u;
@@ -152,6 +152,8 @@ RollingModel::Solved RollingModel::solve(const FrictionLaw& law, const WheelSlip
     if (law.mode == FrictionLaw::Mode::coulomb) known_.push_back({p, u});
   }
   s.converged = done >= 1.0;
+  s.parameters = target;
+  s.continued = law.mode == FrictionLaw::Mode::coulomb;
   s.counts.contact_iterations = last.contact_iterations;
   s.counts.newton_iterations = newton_->total_iterations() - newton0;
   s.counts.factorizations = newton_->linear_stats().factorizations - factorizations0;
@@ -197,6 +199,10 @@ void RollingModel::hold_load(Solved& s, double target, double tolerance, double 
     s.converged = false;
     s.failure = fmt::format("Qz = {} N not held within 8 deflection steps (Qz {:.1f} N)", target, q0);
   }
+  if (s.converged && steps > 0) {
+    s.parameters[3] = deflection_ / tm_.axis_z;
+    if (s.continued) known_.push_back({s.parameters, s.u});
+  }
   s.counts.newton_iterations += newton_->total_iterations() - newton0;
   s.counts.factorizations += newton_->linear_stats().factorizations - factorizations0;
   s.counts.time_s += seconds_since(t0);
@@ -234,7 +240,7 @@ void RollingModel::fill(RollingStateResult& state, const Solved& s) const {
 
 void RollingModel::finish(SolveCounters& c) const { add_counters(c, *newton_, *problem_); }
 
-const RollingModel::Known* RollingModel::nearest(const Eigen::Vector3d& p, const Known* other) const {
+const RollingModel::Known* RollingModel::nearest(const Parameters& p, const Known* other) const {
   const Known* best = nullptr;
   for (const Known& k : known_)
     if (&k != other && (!other || (k.parameters - other->parameters).norm() > 1e-15) &&
@@ -246,11 +252,11 @@ const RollingModel::Known* RollingModel::nearest(const Eigen::Vector3d& p, const
 // Secant through the two nearest converged states, when the target lies on (or close to) their line,
 // between them or at most one spacing beyond the nearest (extrapolating further from two close states,
 // e.g. the free-rolling iterates, amplifies their difference); else the start.
-Eigen::VectorXd RollingModel::predict(const Eigen::Vector3d& p, const Eigen::VectorXd& start) const {
+Eigen::VectorXd RollingModel::predict(const Parameters& p, const Eigen::VectorXd& start) const {
   const Known* a = nearest(p);
   const Known* b = a ? nearest(p, a) : nullptr;
   if (!a || !b) return start;
-  const Eigen::Vector3d ab = b->parameters - a->parameters, ap = p - a->parameters;
+  const Parameters ab = b->parameters - a->parameters, ap = p - a->parameters;
   const double t = ap.dot(ab) / ab.squaredNorm();
   // At most about one spacing beyond the nearest state (t ≈ −1 continues a sweep with equal steps, up to
   // round-off on either side of −1); two spacings (measured: α = −4° extrapolated from α = 0 and +2°) are

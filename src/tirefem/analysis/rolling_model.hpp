@@ -34,6 +34,8 @@ class RollingModel {
     RollingFigures figures;
     RollingSolveCounts counts;
     Eigen::VectorXd u;
+    Eigen::Vector4d parameters = Eigen::Vector4d::Zero();  // of the state (see Parameters below)
+    bool continued = false;  // a Coulomb state: kept for later states to start from and predict with
   };
 
   // Solves with the given law at the given slip. Coulomb and full stick: from the nearest converged
@@ -55,14 +57,18 @@ class RollingModel {
   void finish(SolveCounters& c) const;
 
  private:
+  // (axle height / Rk, tan α, γ, δz / axle height): κ, α, γ and the support's deflection on comparable
+  // scales. The deflection is one of them because states held at a load (hold_load) lie at other δz: a
+  // secant through states at two deflections, read as if at one, predicts badly.
+  using Parameters = Eigen::Vector4d;
   struct Known {
-    Eigen::Vector3d parameters;  // (axle height / Rk, tan α, γ): κ, α and γ on comparable scales
+    Parameters parameters;
     Eigen::VectorXd u;
   };
-  Eigen::Vector3d parameters(const WheelSlip& slip) const;
-  void apply(const Eigen::Vector3d& parameters);
-  const Known* nearest(const Eigen::Vector3d& p, const Known* other = nullptr) const;
-  Eigen::VectorXd predict(const Eigen::Vector3d& p, const Eigen::VectorXd& start) const;
+  Parameters parameters(const WheelSlip& slip) const;
+  void apply(const Parameters& parameters);
+  const Known* nearest(const Parameters& p, const Known* other = nullptr) const;
+  Eigen::VectorXd predict(const Parameters& p, const Eigen::VectorXd& start) const;
 
   const TyreMesh& tm_;
   ContactSettings settings_;
