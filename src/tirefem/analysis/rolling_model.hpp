@@ -68,7 +68,8 @@ class RollingModel {
   Parameters parameters(const WheelSlip& slip) const;
   void apply(const Parameters& parameters);
   const Known* nearest(const Parameters& p, const Known* other = nullptr) const;
-  Eigen::VectorXd predict(const Parameters& p, const Eigen::VectorXd& start) const;
+  // `path`: indices in known_ of the continuation under way (its start state, then its stages).
+  Eigen::VectorXd predict(const Parameters& p, const Eigen::VectorXd& start, const std::vector<int>& path) const;
 
   const TyreMesh& tm_;
   ContactSettings settings_;
