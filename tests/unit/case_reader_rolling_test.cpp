@@ -128,7 +128,7 @@ TEST(CaseReaderRolling, ReadsAFullStudy) {
 
 TEST(CaseReaderRolling, TheExampleHasThePapersRollingStudies) {
   const Case c = read_case(kExample);
-  ASSERT_EQ(c.rolling.size(), 2u);
+  ASSERT_EQ(c.rolling.size(), 3u);
   const RollingStudy& plane = c.rolling[0];
   EXPECT_EQ(plane.support.kind, SupportDescription::Kind::plane);
   EXPECT_EQ(plane.friction, 0.7);
@@ -140,6 +140,15 @@ TEST(CaseReaderRolling, TheExampleHasThePapersRollingStudies) {
   ASSERT_TRUE(plane.sweep.has_value());
   EXPECT_EQ(plane.sweep->points, 15);
   EXPECT_EQ(c.rolling[1].support.kind, SupportDescription::Kind::drum);
+  // and the cornering study (issue 11): full model, the example's states, an α sweep with Qz held, a grid
+  const RollingStudy& curve = c.rolling[2];
+  ASSERT_TRUE(curve.mesh.has_value());
+  EXPECT_FALSE(curve.mesh->half_model);
+  EXPECT_EQ(curve.states.size(), 9u);
+  ASSERT_TRUE(curve.angle_sweep.has_value());
+  EXPECT_TRUE(curve.angle_sweep->hold_load);
+  EXPECT_EQ(curve.angle_sweep->to, 12.0);
+  ASSERT_TRUE(curve.combined.has_value());
 }
 
 TEST(CaseReaderRolling, RootAcceptsRolling) {
@@ -366,12 +375,12 @@ TEST(CaseReaderRolling, NamesAreUniqueAmongAllStudies) {
                      "\n[[rolling]]\nname = \"footprint_3700N\"\nsupport = { kind = \"plane\" }\n"
                      "states = [{ state = \"free\" }]\n";
   EXPECT_EQ(error_of(text), where(text, "\"footprint_3700N\"\nsupport = { kind = \"plane\" }\nstates") +
-                                "rolling[2].name: duplicate name \"footprint_3700N\" (already used by "
+                                "rolling[3].name: duplicate name \"footprint_3700N\" (already used by "
                                 "footprint[0].name); load curves, footprints and rolling studies need "
                                 "distinct names");
   EXPECT_CONTAINS(error_of(example_text() + "\n[[rolling]]\nname = \"drum\"\nsupport = { kind = \"plane\" }\n"
                                             "states = [{ state = \"free\" }]\n"),
-                  "rolling[2].name: duplicate name \"drum\" (already used by load_curve[1].name)");
+                  "rolling[3].name: duplicate name \"drum\" (already used by load_curve[1].name)");
   EXPECT_CONTAINS(error_of(tyre_with("[[rolling]]\nname = \"a\"\nsupport = { kind = \"plane\" }\n"
                                      "states = [{ state = \"free\" }]\n"
                                      "[[rolling]]\nname = \"a\"\nsupport = { kind = \"plane\" }\n"
