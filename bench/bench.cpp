@@ -152,17 +152,11 @@ int main(int argc, char** argv) {
              blas.forced ? " (set by OPENBLAS_CORETYPE)" : " (detected)");
   const char* wait_policy = std::getenv("OMP_WAIT_POLICY");
   fmt::print("OpenMP wait policy: {}\n", wait_policy ? wait_policy : "libgomp's default (spinning)");
-  if (argc > 1 && std::string(argv[1]) == "cornering") {
+  // "rolling [CASE]" and "cornering [CASE]": the rolling benchmarks.
+  for (const auto& [mode, benchmark] : {std::pair{"rolling", &rolling_benchmark}, std::pair{"cornering", &cornering_benchmark}}) {
+    if (argc < 2 || std::string(argv[1]) != mode) continue;
     try {
-      return cornering_benchmark(argc > 2 ? argv[2] : std::string(TIREFEM_SOURCE_DIR) + "/examples/175-70R13.toml");
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "tirefem_bench: %s\n", e.what());
-      return 2;
-    }
-  }
-  if (argc > 1 && std::string(argv[1]) == "rolling") {
-    try {
-      return rolling_benchmark(argc > 2 ? argv[2] : std::string(TIREFEM_SOURCE_DIR) + "/examples/175-70R13.toml");
+      return benchmark(argc > 2 ? argv[2] : std::string(TIREFEM_SOURCE_DIR) + "/examples/175-70R13.toml");
     } catch (const std::exception& e) {
       std::fprintf(stderr, "tirefem_bench: %s\n", e.what());
       return 2;

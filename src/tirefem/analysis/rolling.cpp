@@ -187,15 +187,18 @@ void cornering_stiffness(RollingModel& model, const RollingStudy& study, Rolling
   const double dfy = plus.figures.Fy_N - minus.figures.Fy_N;
   if (dfy != 0.0)
     r.pneumatic_trail_at_zero_mm = -(plus.figures.aligning_moment_Nmm - minus.figures.aligning_moment_Nmm) / dfy;
-  if (!progress || r.footprint.points.empty()) return;
-  // Beside the published ranges for radial passenger tyres at their nominal load (issue 11).
+  if (r.footprint.points.empty()) return;
   const PatchFigures& patch = r.footprint.points.back().patch;
-  progress(fmt::format("  cornering stiffness at α = 0: {:.0f} N/deg = {:.3f} Fz per degree (radial passenger "
-                       "tyres: about 0.11–0.19); pneumatic trail {:.1f} mm = {:.2f} of the patch length {:.0f} mm "
-                       "(typically about 1/6)",
-                       -*r.cornering_stiffness_N_per_deg, -*r.cornering_stiffness_N_per_deg / patch.Qz_N,
-                       r.pneumatic_trail_at_zero_mm.value_or(0.0),
-                       r.pneumatic_trail_at_zero_mm.value_or(0.0) / patch.patch_length_mm, patch.patch_length_mm));
+  if (patch.Qz_N > 0) r.cornering_stiffness_over_Fz_per_deg = -*r.cornering_stiffness_N_per_deg / patch.Qz_N;
+  if (r.pneumatic_trail_at_zero_mm && patch.patch_length_mm > 0)
+    r.pneumatic_trail_over_patch_length = *r.pneumatic_trail_at_zero_mm / patch.patch_length_mm;
+  if (progress && r.cornering_stiffness_over_Fz_per_deg && r.pneumatic_trail_over_patch_length)
+    progress(fmt::format("  cornering stiffness at α = 0: {:.0f} N/deg = {:.3f} Fz per degree (radial passenger "
+                         "tyres: about 0.11–0.19); pneumatic trail {:.1f} mm = {:.2f} of the patch length {:.0f} "
+                         "mm (typically about 1/6)",
+                         -*r.cornering_stiffness_N_per_deg, *r.cornering_stiffness_over_Fz_per_deg,
+                         *r.pneumatic_trail_at_zero_mm, *r.pneumatic_trail_over_patch_length,
+                         patch.patch_length_mm));
 }
 
 }  // namespace

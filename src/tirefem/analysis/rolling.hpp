@@ -115,6 +115,10 @@ struct RollingResult {
   // central differences over α = ±0.2° at the sweep's κ and γ.
   std::optional<double> cornering_stiffness_N_per_deg;
   std::optional<double> pneumatic_trail_at_zero_mm;
+  // The same normalised as published for radial passenger tyres (about 0.11–0.19 Fz per degree; a trail
+  // of about 1/6 of the patch length), on the static footprint's Qz and patch length.
+  std::optional<double> cornering_stiffness_over_Fz_per_deg;
+  std::optional<double> pneumatic_trail_over_patch_length;
   SolveCounters counters;                             // rolling phase (after the footprint)
 };
 

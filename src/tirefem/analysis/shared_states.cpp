@@ -24,16 +24,17 @@ const InflationResult& InflatedTyres::inflated(const MeshSettings& m) {
   if (!e.inflated) {
     // Another mesh's inflated state on the same meridional stations is a close start (the inflated tyre
     // is axisymmetric).
+    const TyreMesh& tm = mesh(m);
     const Entry* near = nullptr;
     for (const auto& [key, other] : entries_)
       if (&other != &e && other.inflated && other.inflated->converged &&
-          other.inflated->kinematics == Kinematics::nonlinear && other.mesh->half_model == m.half_model &&
-          other.mesh->mesh.u_values == mesh(m).mesh.u_values)
+          other.inflated->kinematics == Kinematics::nonlinear && other.mesh->half_model == tm.half_model &&
+          other.mesh->mesh.u_values == tm.mesh.u_values)
         near = &other;
     InflationSettings nonlinear = case_.inflation;
     nonlinear.linear = false;
-    e.inflated = near ? run_inflation_from(mesh(m), nonlinear, *near->mesh, near->inflated->displacement, progress_)
-                      : inflate_for_contact(mesh(m), case_.inflation, progress_);
+    e.inflated = near ? run_inflation_from(tm, nonlinear, *near->mesh, near->inflated->displacement, progress_)
+                      : inflate_for_contact(tm, case_.inflation, progress_);
     if (solved_) solved_(m, e.inflated->counters.wall_s);
   }
   if (!e.inflated->converged) throw std::runtime_error(e.inflated->failure);

@@ -137,15 +137,10 @@ void insert_cornering_summary(toml::table& t, const RollingResult& r) {
     t.insert("cornering_stiffness_N_per_rad", *r.cornering_stiffness_N_per_deg * 180.0 / std::numbers::pi);
   }
   if (r.pneumatic_trail_at_zero_mm) t.insert("pneumatic_trail_at_zero_mm", *r.pneumatic_trail_at_zero_mm);
-  // Normalised as published for radial passenger tyres (cornering stiffness about 0.11–0.19 Fz per
-  // degree, trail about 1/6 of the patch length), on the static footprint's Qz and patch length.
-  if (!r.footprint.points.empty()) {
-    const PatchFigures& patch = r.footprint.points.back().patch;
-    if (r.cornering_stiffness_N_per_deg && patch.Qz_N > 0)
-      t.insert("cornering_stiffness_over_Fz_per_deg", -*r.cornering_stiffness_N_per_deg / patch.Qz_N);
-    if (r.pneumatic_trail_at_zero_mm && patch.patch_length_mm > 0)
-      t.insert("pneumatic_trail_over_patch_length", *r.pneumatic_trail_at_zero_mm / patch.patch_length_mm);
-  }
+  if (r.cornering_stiffness_over_Fz_per_deg)
+    t.insert("cornering_stiffness_over_Fz_per_deg", *r.cornering_stiffness_over_Fz_per_deg);
+  if (r.pneumatic_trail_over_patch_length)
+    t.insert("pneumatic_trail_over_patch_length", *r.pneumatic_trail_over_patch_length);
   if (!r.angle_sweep.empty()) t.insert("angle_sweep", points_summary(r.angle_sweep, r.friction));
   if (!r.combined.empty()) t.insert("combined", points_summary(r.combined, r.friction));
 }

@@ -144,18 +144,13 @@ TyreMesh build_tyre_mesh(const TyreDescription& tyre, const MeshSettings& settin
       result.pressure_elements[e] = e;
     }
 
-  result.fixed_dofs = tyre_supports(mesh, settings.half_model);
-  return result;
-}
-
-std::vector<int> tyre_supports(const ShellMesh& mesh, bool half_model) {
-  std::vector<int> fixed;
+  std::vector<int>& fixed = result.fixed_dofs;
   auto fix_pairs = [&](GridEdge edge) {
     for (int p : mesh.edge_pairs(edge))
       for (int c = 0; c < 6; ++c) fixed.push_back(6 * p + c);
   };
   fix_pairs(GridEdge::u_max);
-  if (half_model) {
+  if (settings.half_model) {
     for (int p : mesh.edge_pairs(GridEdge::u_min)) {
       fixed.push_back(inner_dof(p, 0));
       fixed.push_back(outer_dof(p, 0));
@@ -165,7 +160,7 @@ std::vector<int> tyre_supports(const ShellMesh& mesh, bool half_model) {
   }
   std::sort(fixed.begin(), fixed.end());
   fixed.erase(std::unique(fixed.begin(), fixed.end()), fixed.end());
-  return fixed;
+  return result;
 }
 
 }  // namespace tirefem

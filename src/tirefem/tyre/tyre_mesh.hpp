@@ -43,10 +43,6 @@ struct TyreMesh {
 // Throws std::invalid_argument on inconsistent input (validate_case() reports it with field names first).
 TyreMesh build_tyre_mesh(const TyreDescription& tyre, const MeshSettings& settings);
 
-// The DOFs held: all six of each bead node pair; in the half model also the x displacement of both
-// faces at the equator (symmetry).
-std::vector<int> tyre_supports(const ShellMesh& mesh, bool half_model);
-
 // Meridional stations of the half model, 0 … L (see above). `breaks` are the interior cut points.
 std::vector<double> meridional_stations(double length, std::vector<double> breaks, int elements);
 
