@@ -122,14 +122,18 @@ struct SweepTarget {
   bool new_branch = false;
 };
 bool run_sweep(RollingModel& model, const RollingStudy& study, RollingResult& r, const std::vector<SweepTarget>& targets,
-               bool hold, std::vector<SweepPoint>& out, const std::string& what, const ProgressSink& progress) {
+               bool hold, std::vector<SweepPoint>& out, const std::string& what, const ProgressSink& progress,
+               const std::function<void()>& point_done) {
   FrictionLaw law;
   law.friction = study.friction;
   const double re = *r.effective_rolling_radius_mm, stiffness = static_vertical_stiffness(r);
   bool ok = true, skip = false;
   for (const SweepTarget& t : targets) {
     if (t.new_branch) model.set_deflection(r.deflection_mm), skip = false;
-    if (skip) continue;
+    if (skip) {
+      if (point_done) point_done();
+      continue;
+    }
     const double rk = re / (1.0 + t.slip);
     // Within a branch each point continues from its neighbour (the nearest state in (κ, tan α, γ) may
     // lie on another branch, e.g. the α sweep's point for a combined-slip one, and measured, diverge).
@@ -140,6 +144,7 @@ bool run_sweep(RollingModel& model, const RollingStudy& study, RollingResult& r,
       ok = false, skip = true;
       if (r.failure.empty()) r.failure = fmt::format("{}: {}", label, s.failure);
       if (progress) progress(fmt::format("  {}: did not converge: {}", label, s.failure));
+      if (point_done) point_done();
       continue;
     }
     out.push_back({t.slip, t.alpha_deg, t.gamma_deg, rk, model.deflection(), s.figures, s.counts});
@@ -148,6 +153,7 @@ bool run_sweep(RollingModel& model, const RollingStudy& study, RollingResult& r,
                            "Newton iterations, {:.2f} s)",
                            label, s.figures.Fx_N, s.figures.Fy_N, s.figures.aligning_moment_Nmm, s.figures.Qz_N,
                            100 * s.figures.stick_area_fraction, s.counts.newton_iterations, s.counts.time_s));
+    if (point_done) point_done();
   }
   return ok;
 }
@@ -205,7 +211,8 @@ void cornering_stiffness(RollingModel& model, const RollingStudy& study, Rolling
 
 RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const InflationSettings& inflation,
                           const ContactSettings& contact, const RollingStudy& study, const ProgressSink& progress,
-                          const InflationResult* inflated, const StaticContactResult* footprint) {
+                          const InflationResult* inflated, const StaticContactResult* footprint,
+                          const std::function<void()>& point_done) {
   RollingResult r;
   r.name = study.name;
   r.support = study.support;
@@ -241,6 +248,7 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
   RollingModel model(tm, tyre, inflation, contact, study, r);
 
   const RollingStateResult free = free_rolling(model, study, r, progress);
+  if (point_done) point_done();
   if (!free.converged) {
     r.failure = "free rolling: " + free.failure;
     r.states.push_back(free);
@@ -259,7 +267,7 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
     state.spec = spec;
     state.name = spec.name.empty() ? kind_name(spec.kind) : spec.name;
     const bool cornering = spec.slip_angle_deg != 0.0 || spec.camber_deg != 0.0;
-    if (spec.kind == RollingStateSpec::Kind::free && !cornering) {
+    if (spec.kind == RollingStateSpec::Kind::free && !cornering) {  // solved (and counted) above
       const std::string name = state.name;
       state = free;
       state.spec = spec;
@@ -329,13 +337,14 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
       if (r.failure.empty()) r.failure = fmt::format("state '{}': {}", state.name, s.failure);
     }
     r.states.push_back(std::move(state));
+    if (point_done) point_done();
   }
   if (study.sweep) {
     const SlipSweep& sw = *study.sweep;
     std::vector<double> slips;
     for (int i = 0; i < sw.points; ++i) slips.push_back(sw.from + (sw.to - sw.from) * i / (sw.points - 1));
     const auto targets = outward(slips, [](double k) { return SweepTarget{k, 0.0, 0.0}; });
-    ok = run_sweep(model, study, r, targets, sw.hold_load, r.sweep, "sweep", progress) && ok;
+    ok = run_sweep(model, study, r, targets, sw.hold_load, r.sweep, "sweep", progress, point_done) && ok;
     std::sort(r.sweep.begin(), r.sweep.end(), [](const SweepPoint& a, const SweepPoint& b) { return a.slip < b.slip; });
   }
   if (study.angle_sweep) {
@@ -343,7 +352,7 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
     std::vector<double> angles;
     for (int i = 0; i < sw.points; ++i) angles.push_back(sw.from + (sw.to - sw.from) * i / (sw.points - 1));
     const auto targets = outward(angles, [&](double a) { return SweepTarget{sw.slip, a, sw.camber_deg}; });
-    ok = run_sweep(model, study, r, targets, sw.hold_load, r.angle_sweep, "α sweep", progress) && ok;
+    ok = run_sweep(model, study, r, targets, sw.hold_load, r.angle_sweep, "α sweep", progress, point_done) && ok;
     std::sort(r.angle_sweep.begin(), r.angle_sweep.end(),
               [](const SweepPoint& a, const SweepPoint& b) { return a.slip_angle_deg < b.slip_angle_deg; });
     cornering_stiffness(model, study, r, progress);
@@ -355,7 +364,7 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
       const auto line = outward(study.combined->slip_angles_deg, [k](double a) { return SweepTarget{k, a, 0.0}; });
       targets.insert(targets.end(), line.begin(), line.end());
     }
-    ok = run_sweep(model, study, r, targets, study.combined->hold_load, r.combined, "combined", progress) && ok;
+    ok = run_sweep(model, study, r, targets, study.combined->hold_load, r.combined, "combined", progress, point_done) && ok;
     std::sort(r.combined.begin(), r.combined.end(), [](const SweepPoint& a, const SweepPoint& b) {
       return a.slip != b.slip ? a.slip < b.slip : a.slip_angle_deg < b.slip_angle_deg;
     });

@@ -13,6 +13,7 @@
 // −y when the study is reversed): > 0 traction. Mx is the moment about the axle (x axis) of all contact
 // forces, Σ (y Fz − (z − z_axle) Fy) (for a reversed study the mirror image's, so that it keeps its sign
 // with Qy); Rd = axle height above the support.
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -124,11 +125,13 @@ struct RollingResult {
 
 // From `inflated` when given (see run_footprint), else from its own inflation. `footprint`, when given, is
 // the completed static footprint of this mesh on the study's support at its target load (shared by the
-// studies at that load); else the study solves its own.
+// studies at that load); else the study solves its own. `point_done` is called once per state and sweep
+// point as it is finished (solved, failed or skipped), e.g. to estimate the time left.
 RollingResult run_rolling(const TyreMesh& tyre_mesh, const TyreDescription& tyre, const InflationSettings& inflation,
                           const ContactSettings& contact, const RollingStudy& study, const ProgressSink& progress = {},
                           const InflationResult* inflated = nullptr,
-                          const StaticContactResult* footprint = nullptr);
+                          const StaticContactResult* footprint = nullptr,
+                          const std::function<void()>& point_done = {});
 
 // Solves the rolling problem at the forms' current settings from u (overwritten). Two-level: the contact
 // region and the friction plan are frozen together in each outer iteration; single loop: both follow

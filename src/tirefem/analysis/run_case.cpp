@@ -19,11 +19,14 @@
 #include "tirefem/analysis/rolling.hpp"
 #include "tirefem/analysis/shared_states.hpp"
 #include "tirefem/analysis/study_reports.hpp"
+#include "tirefem/analysis/tyre_test.hpp"
+#include "tirefem/case/tyre_reader.hpp"
 #include "tirefem/io/json_summary.hpp"
 #include "tirefem/io/results_folder.hpp"
 #include "tirefem/results/footprint_report.hpp"
 #include "tirefem/results/inflation_report.hpp"
 #include "tirefem/results/rolling_report.hpp"
+#include "tirefem/results/tyre_test_report.hpp"
 #include "tirefem/solver/blas_kernel.hpp"
 
 namespace tirefem {
@@ -202,6 +205,13 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     } catch (const std::runtime_error&) {
     }
   }
+  for (const TyreTestStudy& s : c.tyre_tests) {
+    try {
+      tyres.inflated(s.mesh.value_or(c.mesh));
+      tyres.inflated(tyre_test_vertical_mesh(s.mesh.value_or(c.mesh)));
+    } catch (const std::runtime_error&) {
+    }
+  }
   if (!c.load_curves.empty() || !c.footprints.empty()) {
     try {
       tyres.inflated(c.mesh);
@@ -213,7 +223,11 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
   // The studies, as chains of tasks: each study its own chain, except that a rolling study at the load,
   // support and mesh of an earlier footprint (or rolling study) runs after it, in its chain, and starts
   // from its footprint. Chains run side by side (parallel_chains.hpp).
-  const int study_count = static_cast<int>(c.load_curves.size() + c.footprints.size() + c.rolling.size());
+  // A tyre test is a study per load and one for its load–deflection curve.
+  int rig_runs = 0;
+  for (const TyreTestStudy& s : c.tyre_tests) rig_runs += static_cast<int>(s.load_factors.size()) + 1;
+  const int study_count =
+      static_cast<int>(c.load_curves.size() + c.footprints.size() + c.rolling.size()) + rig_runs;
   std::vector<StudyRun> runs(study_count);
   std::vector<TaskChain> chains;
   std::map<std::string, std::size_t> chain_of_footprint;
@@ -300,6 +314,36 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     }
     ++k;
   }
+  // The rig's loads first, the heaviest first (they take longest), then its vertical curve.
+  std::vector<RollingStudy> rig_studies;  // stable: the tasks refer to them
+  for (const TyreTestStudy& s : c.tyre_tests)
+    for (std::size_t i = 0; i < s.load_factors.size(); ++i) rig_studies.push_back(tyre_test_rolling_study(s, i));
+  std::vector<LoadCurveStudy> rig_curves;
+  for (const TyreTestStudy& s : c.tyre_tests) rig_curves.push_back(tyre_test_vertical_study(s));
+  std::vector<std::unique_ptr<TyreTestProgress>> rig_progress;
+  for (const TyreTestStudy& s : c.tyre_tests) rig_progress.push_back(std::make_unique<TyreTestProgress>(s));
+  std::size_t rig_study = 0;
+  for (std::size_t t = 0; t < c.tyre_tests.size(); ++t) {
+    const MeshSettings settings = c.tyre_tests[t].mesh.value_or(c.mesh);
+    const std::size_t first = rig_study;
+    for (std::size_t i = 0; i < c.tyre_tests[t].load_factors.size(); ++i, ++rig_study, ++k) {
+      const RollingStudy& s = rig_studies[rig_study];
+      chains.push_back({task(k, "tyre test '" + s.name + "'", [&, k, t, settings](const ProgressSink& sink) {
+        const auto point_done = [&] {
+          if (const std::string line = rig_progress[t]->point_done(); !line.empty()) sink(line);
+        };
+        runs[k].rolling = run_rolling(tyres.mesh(settings), c.tyre, c.inflation, c.contact, s, sink,
+                                      &tyres.inflated(settings), nullptr, point_done);
+      })});
+    }
+    std::reverse(chains.end() - static_cast<std::ptrdiff_t>(rig_study - first), chains.end());
+    const MeshSettings half = tyre_test_vertical_mesh(settings);
+    chains.push_back({task(k, "tyre test '" + rig_curves[t].name + "'", [&, k, half, t](const ProgressSink& sink) {
+      runs[k].contact = run_load_curve(tyres.mesh(half), c.tyre, c.inflation, c.contact, rig_curves[t], sink,
+                                       &tyres.inflated(half));
+    })});
+    ++k;
+  }
   const WorkerPlan plan = plan_workers(static_cast<int>(chains.size()), omp_get_max_threads());
   prefixed = plan.workers > 1;
   if (prefixed)
@@ -312,9 +356,10 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
 
   // Results in the case's order.
   toml::array incomplete;
-  for (const StudyRun& run : runs) {
-    times.add(run.phase, run.seconds);
-    if (!run.error.empty()) incomplete.push_back(run.error);
+  const int rig_first_run = study_count - rig_runs;  // a tyre test reports its failures itself
+  for (int i = 0; i < study_count; ++i) {
+    times.add(runs[i].phase, runs[i].seconds);
+    if (!runs[i].error.empty() && i < rig_first_run) incomplete.push_back(runs[i].error);
   }
   times.begin("writing the studies' results");
   ReportWriter plots(folder, progress);
@@ -382,6 +427,25 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     rolling_summaries.push_back(std::move(t));
   }
   if (!c.rolling.empty()) summary.insert("rolling", std::move(rolling_summaries));
+  toml::array rig_summaries;
+  for (const TyreTestStudy& s : c.tyre_tests) {
+    std::vector<const RollingResult*> loads;
+    std::vector<std::string> errors;
+    for (std::size_t i = 0; i < s.load_factors.size(); ++i, ++k) {
+      loads.push_back(runs[k].rolling ? &*runs[k].rolling : nullptr);
+      errors.push_back(runs[k].error);
+    }
+    const StudyRun& vertical = runs[k++];
+    const TyreTestResult t = assemble_tyre_test(s, case_reading::tyre_outer_radius(c.tyre), loads, errors, vertical.contact,
+                                                vertical.error);
+    for (const std::string& m : t.failures) {
+      report(progress, fmt::format("warning: tyre test '{}': {} (converged points kept)", s.name, m));
+      incomplete.push_back(fmt::format("tyre test '{}': {}", s.name, m));
+    }
+    plots.attempt("tyre test '" + s.name + "'", [&] { write_tyre_test(folder, plots, t); });
+    rig_summaries.push_back(tyre_test_summary(t));
+  }
+  if (!c.tyre_tests.empty()) summary.insert("tyre_tests", std::move(rig_summaries));
   times.end();
   const bool completed = incomplete.empty();
   summary.insert("completed", completed);

@@ -221,6 +221,25 @@ struct RollingStudy {
   std::optional<MeshSettings> mesh;
 };
 
+// A virtual flat-track tyre test (issue 12): at each load of `load_factors` × `nominal_load` the static
+// footprint, free rolling, a longitudinal slip sweep and a slip-angle sweep with Qz held, and free rolling
+// at each camber of `cambers`; plus the load–deflection curve (on the half model of the same mesh, where
+// vertical loading is symmetric). Its table is the measurement a Magic Formula fit reads. Always a plane
+// road; the mesh must be the full model (slip angle and camber need it).
+struct TyreTestStudy {
+  std::string name;  // as LoadCurveStudy::name
+  double nominal_load = 3700.0;            // FNOMIN, N
+  std::vector<double> load_factors{0.5, 1.0, 1.5};
+  double load_tolerance = 1e-3;
+  double friction = 0.7;
+  SlipSweep slip_sweep{-0.15, 0.15, 15, true};
+  SlipAngleSweep angle_sweep{-12.0, 12.0, 15, 0.0, 0.0, true};
+  std::vector<double> cambers_deg;         // free-rolling states at each load (camber thrust)
+  double vertical_max_deflection = 40.0;   // mm, the load–deflection curve from the undeformed tyre
+  int vertical_points = 10;
+  std::optional<MeshSettings> mesh;        // unset: the case's
+};
+
 struct Case {
   std::filesystem::path source;  // the file it came from (for messages and relative paths)
   std::string title;
@@ -231,6 +250,7 @@ struct Case {
   std::vector<LoadCurveStudy> load_curves;  // [[load_curve]] tables, run in order after inflation
   std::vector<FootprintStudy> footprints;   // [[footprint]] tables
   std::vector<RollingStudy> rolling;        // [[rolling]] tables
+  std::vector<TyreTestStudy> tyre_tests;    // [[tyre_test]] tables
 };
 
 }  // namespace tirefem

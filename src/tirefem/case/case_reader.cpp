@@ -16,6 +16,7 @@
 #include "tirefem/case/study_reader.hpp"
 #include "tirefem/case/toml_fields.hpp"
 #include "tirefem/case/tyre_reader.hpp"
+#include "tirefem/case/tyre_test_reader.hpp"
 #include "tirefem/tyre/meridian_profile.hpp"
 
 namespace tirefem {
@@ -26,7 +27,7 @@ using namespace case_reading;
 // Structure and types (missing fields, wrong types, unknown keys, unknown names) of the whole file.
 Case read_root(TomlFields& f, const toml::table& root) {
   const toml::table& r =
-      f.table(root, "", {"title", "tyre", "mesh", "inflation", "contact", "load_curve", "footprint", "rolling"});
+      f.table(root, "", {"title", "tyre", "mesh", "inflation", "contact", "load_curve", "footprint", "rolling", "tyre_test"});
   Case c;
   if (const toml::node* v = f.get(r, "", "title")) c.title = f.string(*v, "title");
   const TyreRead tyre = read_tyre(f, f.need(r, "", "tyre", "a table [tyre]"), "tyre");
@@ -47,19 +48,25 @@ Case read_root(TomlFields& f, const toml::table& root) {
     const toml::array& a = f.array(*v, "rolling", "tables [[rolling]]");
     for (std::size_t i = 0; i < a.size(); ++i) c.rolling.push_back(read_rolling(f, a[i], index("rolling", i), c.mesh));
   }
+  if (const toml::node* v = f.get(r, "", "tyre_test")) {
+    const toml::array& a = f.array(*v, "tyre_test", "tables [[tyre_test]]");
+    for (std::size_t i = 0; i < a.size(); ++i)
+      c.tyre_tests.push_back(read_tyre_test(f, a[i], index("tyre_test", i), c.mesh));
+  }
   // Keys only some studies use are required only when such a study is there.
-  if (!c.rolling.empty() && !tyre.shear_modulus_given)
+  if ((!c.rolling.empty() || !c.tyre_tests.empty()) && !tyre.shear_modulus_given)
     f.fail("tyre.tread.shear_modulus",
-           fmt::format("missing; expected a number (MPa), the tread rubber's shear modulus: the rolling study {} "
+           fmt::format("missing; expected a number (MPa), the tread rubber's shear modulus: the {} study {} "
                        "needs it",
-                       c.rolling.front().name));
+                       c.rolling.empty() ? "tyre_test" : "rolling",
+                       c.rolling.empty() ? c.tyre_tests.front().name : c.rolling.front().name));
   return c;
 }
 
 // The value and consistency checks, section by section.
 void check_case(const FieldChecker& checker, const Case& c) {
   const TyreDescription& t = c.tyre;
-  check_tyre(checker, t, !c.rolling.empty());
+  check_tyre(checker, t, !c.rolling.empty() || !c.tyre_tests.empty());
   TyreScale scale;
   scale.outer_radius = tyre_outer_radius(t);
   const auto lowest = std::min_element(t.profile.begin(), t.profile.end(),
@@ -69,6 +76,9 @@ void check_case(const FieldChecker& checker, const Case& c) {
   check_mesh(checker, c.mesh, "mesh", t.zones.size());
   for (std::size_t i = 0; i < c.rolling.size(); ++i)
     if (c.rolling[i].mesh) check_mesh(checker, *c.rolling[i].mesh, join(index("rolling", i), "mesh"), t.zones.size());
+  for (std::size_t i = 0; i < c.tyre_tests.size(); ++i)
+    if (c.tyre_tests[i].mesh)
+      check_mesh(checker, *c.tyre_tests[i].mesh, join(index("tyre_test", i), "mesh"), t.zones.size());
   check_inflation(checker, c.inflation, "inflation");
   check_contact(checker, c.contact, "contact");
 
@@ -87,6 +97,11 @@ void check_case(const FieldChecker& checker, const Case& c) {
     const std::string p = index("rolling", i);
     check_study_name(checker, c.rolling[i].name, join(p, "name"), names);
     check_rolling(checker, c.rolling[i], p, scale, c.mesh.half_model);
+  }
+  for (std::size_t i = 0; i < c.tyre_tests.size(); ++i) {
+    const std::string p = index("tyre_test", i);
+    check_study_name(checker, c.tyre_tests[i].name, join(p, "name"), names);
+    check_tyre_test(checker, c.tyre_tests[i], p, scale, c.mesh.half_model);
   }
 }
 

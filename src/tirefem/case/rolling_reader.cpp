@@ -113,19 +113,7 @@ SlipSweep read_sweep(TomlFields& f, const toml::node& n, const std::string& sp) 
   return sw;
 }
 
-void check_slip(const FieldChecker& c, double v, const std::string& path) {
-  c.finite(v, path);
-  if (!(v > -1)) c.fail(path, fmt::format("must be > -1 (got {})", v));
-  c.at_most(v, kMaxSlip, path);
-}
-
 // κ = Re/Rk − 1 (analysis/rolling.cpp), with Re estimated by the tyre's outer radius R.
-void check_angle(const FieldChecker& c, double degrees, const std::string& path, double largest) {
-  c.finite(degrees, path);
-  if (!(std::abs(degrees) <= largest))
-    c.fail(path, fmt::format("must be within ±{} degrees (got {})", largest, degrees));
-}
-
 void check_rolling_radius(const FieldChecker& c, double rk, const std::string& path, double outer_radius) {
   c.positive(rk, path);
   const double implied = outer_radius / rk - 1.0;
@@ -158,6 +146,18 @@ void check_states(const FieldChecker& c, const RollingStudy& s, const std::strin
 }
 
 }  // namespace
+
+void check_slip(const FieldChecker& c, double v, const std::string& path) {
+  c.finite(v, path);
+  if (!(v > -1)) c.fail(path, fmt::format("must be > -1 (got {})", v));
+  c.at_most(v, kMaxSlip, path);
+}
+
+void check_angle(const FieldChecker& c, double degrees, const std::string& path, double largest) {
+  c.finite(degrees, path);
+  if (!(std::abs(degrees) <= largest))
+    c.fail(path, fmt::format("must be within ±{} degrees (got {})", largest, degrees));
+}
 
 RollingStudy read_rolling(TomlFields& f, const toml::node& n, const std::string& path, const MeshSettings& case_mesh) {
   const toml::table& t = f.table(

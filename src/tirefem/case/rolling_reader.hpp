@@ -28,6 +28,10 @@ namespace tirefem::case_reading {
 
 RollingStudy read_rolling(TomlFields& f, const toml::node& n, const std::string& path, const MeshSettings& case_mesh);
 
+// A slip κ: finite, > −1, ≤ kMaxSlip. An angle in degrees: finite, |angle| ≤ largest.
+void check_slip(const FieldChecker& c, double v, const std::string& path);
+void check_angle(const FieldChecker& c, double degrees, const std::string& path, double largest);
+
 // All checks but the name (check_study_name) and the own mesh (check_mesh).
 // `case_half_model`: the case's mesh, which a study without its own mesh rolls on.
 void check_rolling(const FieldChecker& c, const RollingStudy& s, const std::string& path, const TyreScale& tyre,

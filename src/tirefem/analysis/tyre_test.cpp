@@ -1,0 +1,151 @@
+#include "tirefem/analysis/tyre_test.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+namespace tirefem {
+namespace {
+constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
+
+TyreTestRow row(TyreTestRow::Kind kind, double target, const RollingFigures& f, double kappa, double alpha_deg,
+                double gamma_deg, double loaded_radius_mm, double re_mm, const RollingSolveCounts& counts) {
+  TyreTestRow r;
+  r.kind = kind;
+  r.target_load_N = target;
+  r.Fz_N = f.Fz_N;
+  r.kappa = kappa;
+  r.alpha_rad = alpha_deg * kRadiansPerDegree;
+  r.gamma_rad = gamma_deg * kRadiansPerDegree;
+  r.Fx_N = f.Fx_N;
+  r.Fy_N = f.Fy_N;
+  r.Mz_Nm = f.aligning_moment_Nmm * 1e-3;
+  r.Mx_Nm = f.overturning_moment_Nmm * 1e-3;
+  r.loaded_radius_m = loaded_radius_mm * 1e-3;
+  r.effective_radius_m = re_mm * 1e-3;
+  r.newton_iterations = counts.newton_iterations;
+  r.factorizations = counts.factorizations;
+  r.time_s = counts.time_s;
+  return r;
+}
+}  // namespace
+
+int tyre_test_points(const TyreTestStudy& s) {
+  const int per_load = 1 + static_cast<int>(s.cambers_deg.size()) + s.slip_sweep.points + s.angle_sweep.points;
+  return per_load * static_cast<int>(s.load_factors.size());
+}
+
+TyreTestProgress::TyreTestProgress(const TyreTestStudy& study)
+    : name_(study.name), total_(tyre_test_points(study)), start_(std::chrono::steady_clock::now()) {}
+
+std::string TyreTestProgress::point_done() {
+  const std::lock_guard lock(mutex_);
+  const int before = 10 * done_ / total_;
+  ++done_;
+  if (10 * done_ / total_ == before || done_ > total_) return {};
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const double left = elapsed / done_ * (total_ - done_);
+  return fmt::format("tyre test '{}': {} of {} points after {:.0f} s{}", name_, done_, total_, elapsed,
+                     done_ < total_ ? fmt::format(", about {:.0f} s left", left) : "");
+}
+
+RollingStudy tyre_test_rolling_study(const TyreTestStudy& study, std::size_t load_index) {
+  const double load = study.load_factors.at(load_index) * study.nominal_load;
+  RollingStudy r;
+  r.name = fmt::format("{}_Fz{:.0f}", study.name, load);
+  r.target_load = load;
+  r.load_tolerance = study.load_tolerance;
+  r.friction = study.friction;
+  r.tread_shear = RollingStudy::TreadShear::planar;
+  r.mesh = study.mesh;
+  r.states.push_back({});  // free rolling: Re at this load
+  for (double gamma : study.cambers_deg) {
+    RollingStateSpec s;
+    s.camber_deg = gamma;
+    s.name = fmt::format("free_camber_{:g}", gamma);
+    r.states.push_back(s);
+  }
+  r.sweep = study.slip_sweep;
+  r.sweep->hold_load = true;
+  r.angle_sweep = study.angle_sweep;
+  r.angle_sweep->slip = 0.0;
+  r.angle_sweep->camber_deg = 0.0;
+  r.angle_sweep->hold_load = true;
+  return r;
+}
+
+LoadCurveStudy tyre_test_vertical_study(const TyreTestStudy& study) {
+  LoadCurveStudy s;
+  s.name = study.name + "_vertical";
+  s.max_deflection = study.vertical_max_deflection;
+  s.points = study.vertical_points;
+  return s;
+}
+
+MeshSettings tyre_test_vertical_mesh(const MeshSettings& rig_mesh) {
+  MeshSettings m = rig_mesh;
+  m.half_model = true;
+  return m;
+}
+
+TyreTestResult assemble_tyre_test(const TyreTestStudy& study, double unloaded_radius_mm,
+                                  const std::vector<const RollingResult*>& loads,
+                                  const std::vector<std::string>& errors, std::optional<StaticContactResult> vertical,
+                                  const std::string& vertical_error) {
+  using Kind = TyreTestRow::Kind;
+  TyreTestResult t;
+  t.name = study.name;
+  t.nominal_load_N = study.nominal_load;
+  t.unloaded_radius_mm = unloaded_radius_mm;
+  for (std::size_t i = 0; i < study.load_factors.size(); ++i) {
+    TyreTestLoad l;
+    l.target_load_N = study.load_factors[i] * study.nominal_load;
+    const RollingResult* r = i < loads.size() ? loads[i] : nullptr;
+    if (!r) {
+      l.failure = i < errors.size() && !errors[i].empty() ? errors[i] : "not run";
+      t.failures.push_back(fmt::format("load {:.0f} N: {}", l.target_load_N, l.failure));
+      t.loads.push_back(l);
+      continue;
+    }
+    l.completed = r->completed;
+    l.failure = r->failure;
+    if (!r->completed) t.failures.push_back(fmt::format("load {:.0f} N: {}", l.target_load_N, r->failure));
+    if (!r->footprint.points.empty()) {
+      const PatchFigures& p = r->footprint.points.back().patch;
+      l.Fz_N = p.Qz_N;
+      l.patch_length_mm = p.patch_length_mm;
+      l.patch_width_mm = p.patch_width_mm;
+    }
+    l.deflection_mm = r->deflection_mm;
+    l.loaded_radius_mm = r->loaded_radius_mm;
+    l.effective_rolling_radius_mm = r->effective_rolling_radius_mm;
+    l.slip_stiffness_N = r->slip_stiffness_N;
+    l.cornering_stiffness_N_per_deg = r->cornering_stiffness_N_per_deg;
+    l.pneumatic_trail_mm = r->pneumatic_trail_at_zero_mm;
+    t.loads.push_back(l);
+    const double re = r->effective_rolling_radius_mm.value_or(std::nan(""));
+    // The axle of a held-load point sits higher by the difference of its δz to the footprint's.
+    const auto radius = [&](double deflection) { return r->loaded_radius_mm + (r->deflection_mm - deflection); };
+    for (const RollingStateResult& s : r->states) {
+      if (!s.converged) continue;
+      const Kind kind = s.spec.camber_deg != 0.0 ? Kind::camber : Kind::free;
+      t.rows.push_back(row(kind, l.target_load_N, s.figures, s.slip.value_or(0.0), s.spec.slip_angle_deg,
+                           s.spec.camber_deg, r->loaded_radius_mm, re, s.counts));
+    }
+    for (const SweepPoint& p : r->sweep)
+      t.rows.push_back(row(Kind::slip_sweep, l.target_load_N, p.figures, p.slip, p.slip_angle_deg, p.camber_deg,
+                           radius(p.deflection_mm), re, p.counts));
+    for (const SweepPoint& p : r->angle_sweep)
+      t.rows.push_back(row(Kind::angle_sweep, l.target_load_N, p.figures, p.slip, p.slip_angle_deg, p.camber_deg,
+                           radius(p.deflection_mm), re, p.counts));
+  }
+  t.vertical = std::move(vertical);
+  if (!vertical_error.empty()) t.failures.push_back("load–deflection curve: " + vertical_error);
+  else if (t.vertical && !t.vertical->completed)
+    t.failures.push_back("load–deflection curve: " + t.vertical->failure);
+  t.completed = t.failures.empty();
+  return t;
+}
+
+}  // namespace tirefem

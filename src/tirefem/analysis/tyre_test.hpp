@@ -1,0 +1,92 @@
+#pragma once
+// The virtual flat-track rig (issue 12): a [[tyre_test]] study turned into rolling studies, one per load
+// (footprint at the load, free rolling, κ and α sweeps with Qz held, cambered free rolling), and a
+// load–deflection curve; their results gathered into one measurement table in SI units and the TYDEX /
+// ISO 8855 W-axis signs (README, *Conventions*): the data a Magic Formula fit reads.
+#include <chrono>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tirefem/analysis/footprint.hpp"
+#include "tirefem/analysis/rolling.hpp"
+#include "tirefem/case/case.hpp"
+
+namespace tirefem {
+
+// The rolling study of the rig at its load number `load_index` (name "<rig>_Fz<N>").
+RollingStudy tyre_test_rolling_study(const TyreTestStudy& study, std::size_t load_index);
+// The load–deflection curve: a plane pressed from the undeformed tyre, on `vertical_mesh`.
+LoadCurveStudy tyre_test_vertical_study(const TyreTestStudy& study);
+// The half model of the rig's mesh: vertical loading is symmetric about the equatorial plane.
+MeshSettings tyre_test_vertical_mesh(const MeshSettings& rig_mesh);
+
+// The states and sweep points of the whole test (all loads), as run_rolling counts them finished.
+int tyre_test_points(const TyreTestStudy& study);
+
+// Counts the finished points of a test whose loads run side by side, and estimates the time left from
+// the pace so far (footprints included).
+class TyreTestProgress {
+ public:
+  explicit TyreTestProgress(const TyreTestStudy& study);
+  // One more point finished. Returns a progress line at every tenth of the test, else an empty string.
+  std::string point_done();
+
+ private:
+  std::mutex mutex_;
+  std::string name_;
+  int total_ = 0, done_ = 0;
+  std::chrono::steady_clock::time_point start_;
+};
+
+// One measured point, as a flat-track rig would record it. SI units, W axes: FX along the heading,
+// FY to the left, MZ the aligning moment, MX the overturning moment, all at the contact centre;
+// ALPHA > 0 gives FY < 0; GAMMA > 0 leans the wheel's top to the right.
+struct TyreTestRow {
+  enum class Kind { free, slip_sweep, angle_sweep, camber };
+  Kind kind = Kind::free;
+  double target_load_N = 0.0;
+  double Fz_N = 0.0, kappa = 0.0, alpha_rad = 0.0, gamma_rad = 0.0;
+  double Fx_N = 0.0, Fy_N = 0.0, Mz_Nm = 0.0, Mx_Nm = 0.0;
+  double loaded_radius_m = 0.0;     // axle above the road at this point
+  double effective_radius_m = 0.0;  // Re of free rolling at this load
+  int newton_iterations = 0;
+  int factorizations = 0;
+  double time_s = 0.0;
+};
+
+// What the rig found at one load.
+struct TyreTestLoad {
+  double target_load_N = 0.0;
+  bool completed = false;
+  std::string failure;
+  double Fz_N = 0.0;                  // of the static footprint
+  double deflection_mm = 0.0;         // δz from the undeformed tyre
+  double loaded_radius_mm = 0.0;      // Rd
+  std::optional<double> effective_rolling_radius_mm;
+  double patch_length_mm = 0.0, patch_width_mm = 0.0;
+  std::optional<double> slip_stiffness_N;              // dFx/dκ at κ = 0
+  std::optional<double> cornering_stiffness_N_per_deg;  // dFy/dα at α = 0 (< 0 in W axes)
+  std::optional<double> pneumatic_trail_mm;
+};
+
+struct TyreTestResult {
+  std::string name;
+  double nominal_load_N = 0.0;
+  double unloaded_radius_mm = 0.0;
+  std::vector<TyreTestLoad> loads;
+  std::vector<TyreTestRow> rows;              // by load, then free, cambers, κ sweep, α sweep
+  std::optional<StaticContactResult> vertical;  // the load–deflection curve (half model)
+  bool completed = false;
+  std::vector<std::string> failures;
+};
+
+// Gathers the per-load rolling results (in the study's load order; a missing one is a load whose study
+// threw, with its message in `errors`) and the vertical curve.
+TyreTestResult assemble_tyre_test(const TyreTestStudy& study, double unloaded_radius_mm,
+                                  const std::vector<const RollingResult*>& loads,
+                                  const std::vector<std::string>& errors, std::optional<StaticContactResult> vertical,
+                                  const std::string& vertical_error);
+
+}  // namespace tirefem

@@ -1,0 +1,28 @@
+#pragma once
+// The virtual rig's results (analysis/tyre_test.hpp): the measurement table NAME/tyre_test.csv, its plots
+// and its summary.json entry.
+#include <toml++/toml.h>
+
+#include "tirefem/analysis/tyre_test.hpp"
+#include "tirefem/io/csv_writer.hpp"
+#include "tirefem/io/plot_writer.hpp"
+
+namespace tirefem {
+
+// FZ, KAPPA, ALPHA, GAMMA, FX, FY, MZ, MX (N, –, rad, rad, N, N, N·m, N·m; W axes), then the effective and
+// loaded radius, the static patch's length and width at the point's load (m), the series, and the solver
+// counts.
+CsvTable tyre_test_table(const TyreTestResult& result);
+// The load–deflection curve: Qz (N) against δz (mm) from the undeformed tyre, the half model's figures
+// for the full tyre.
+CsvTable tyre_test_vertical_table(const TyreTestResult& result);
+
+// FX(κ), FY(α), MZ(α) at every load, and the vertical characteristic with the radii against the load.
+Plot tyre_test_fx_plot(const TyreTestResult& result);
+Plot tyre_test_fy_plot(const TyreTestResult& result);
+Plot tyre_test_mz_plot(const TyreTestResult& result);
+Plot tyre_test_vertical_plot(const TyreTestResult& result);
+
+toml::table tyre_test_summary(const TyreTestResult& result);
+
+}  // namespace tirefem
