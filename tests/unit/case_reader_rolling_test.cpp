@@ -154,7 +154,7 @@ TEST(CaseReaderRolling, TheExampleHasThePapersRollingStudies) {
 TEST(CaseReaderRolling, RootAcceptsRolling) {
   EXPECT_CONTAINS(error_of(tyre_with("[[rollin]]\nname = \"r\"\n")),
                   "rollin: unknown key; expected one of: title, tyre, mesh, inflation, contact, load_curve, "
-                  "footprint, rolling (did you mean 'rolling'?)");
+                  "footprint, rolling, tyre_test (did you mean 'rolling'?)");
   EXPECT_CONTAINS(error_of(tyre_with("[rolling]\nname = \"r\"\n")),
                   "rolling: must be an array of tables [[rolling]] (got a table)");
 }

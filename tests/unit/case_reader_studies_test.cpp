@@ -184,7 +184,7 @@ TEST(CaseReaderStudies, UnknownKeysInSupportsAndStudies) {
   EXPECT_CONTAINS(
       error_of(tyre_with("[[load_curves]]\nname = \"a\"\n")),
       "load_curves: unknown key; expected one of: title, tyre, mesh, inflation, contact, load_curve, "
-      "footprint, rolling (did you mean 'load_curve'?)");
+      "footprint, rolling, tyre_test (did you mean 'load_curve'?)");
 }
 
 TEST(CaseReaderStudies, EnumLikeStringsListTheAcceptedValues) {

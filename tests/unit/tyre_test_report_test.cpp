@@ -1,0 +1,135 @@
+// The virtual rig's measurement table (analysis/tyre_test.cpp, results/tyre_test_report.cpp): the rolling
+// results of each load become rows in SI units and W-axis signs, with the radius of each held-load point,
+// and a load whose study failed is named, not silently dropped.
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "tirefem/analysis/tyre_test.hpp"
+#include "tirefem/results/tyre_test_report.hpp"
+
+namespace tirefem {
+namespace {
+
+RollingFigures figures(double fx, double fy, double fz, double mz_nmm, double mx_nmm) {
+  RollingFigures f;
+  f.Fx_N = fx, f.Fy_N = fy, f.Fz_N = fz;
+  f.aligning_moment_Nmm = mz_nmm;
+  f.overturning_moment_Nmm = mx_nmm;
+  return f;
+}
+
+// One load's rolling result: footprint at δz = 20 mm (Rd 265 mm), free rolling, one κ point held at a
+// deflection 0.5 mm smaller, one α point held at 0.25 mm more.
+RollingResult load_result(double fz) {
+  RollingResult r;
+  r.completed = true;
+  LoadPoint p;
+  p.deflection_mm = 20.0;
+  p.patch.Qz_N = fz;
+  p.patch.patch_length_mm = 150.0;
+  p.patch.patch_width_mm = 120.0;
+  r.footprint.points = {p};
+  r.footprint.completed = true;
+  r.deflection_mm = 20.0;
+  r.loaded_radius_mm = 265.0;
+  r.effective_rolling_radius_mm = 280.0;
+  r.slip_stiffness_N = 60000.0;
+  r.cornering_stiffness_N_per_deg = -700.0;
+  RollingStateResult free;
+  free.converged = true;
+  free.slip = 0.0;
+  free.figures = figures(0.0, 0.0, fz, 0.0, 0.0);
+  free.counts.newton_iterations = 5;
+  r.states = {free};
+  SweepPoint k;
+  k.slip = -0.05, k.deflection_mm = 19.5, k.figures = figures(-2000.0, 0.0, fz, 0.0, 0.0);
+  r.sweep = {k};
+  SweepPoint a;
+  a.slip_angle_deg = 2.0, a.deflection_mm = 20.25, a.figures = figures(-10.0, -900.0, fz, 15000.0, 4000.0);
+  a.counts.factorizations = 3;
+  r.angle_sweep = {a};
+  return r;
+}
+
+TEST(TyreTestReport, RowsInSiUnitsAndWAxisSigns) {
+  TyreTestStudy s;
+  s.name = "rig";
+  s.nominal_load = 4000.0;
+  s.load_factors = {1.0};
+  const RollingResult r = load_result(4000.0);
+  const TyreTestResult t = assemble_tyre_test(s, 285.0, {&r}, {""}, std::nullopt, "");
+  EXPECT_TRUE(t.completed);
+  ASSERT_EQ(t.rows.size(), 3u);
+  const CsvTable table = tyre_test_table(t);
+  ASSERT_EQ(table.columns.size(), 17u);
+  const std::vector<std::string> first{"FZ", "KAPPA", "ALPHA", "GAMMA", "FX", "FY", "MZ", "MX"};
+  EXPECT_EQ(std::vector<std::string>(table.columns.begin(), table.columns.begin() + 8), first);
+  const auto col = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(table.columns.begin(), table.columns.end(), name) - table.columns.begin());
+  };
+  ASSERT_EQ(table.rows.size(), 3u);
+  const auto& kappa_row = table.rows[1];
+  EXPECT_EQ(kappa_row[col("KAPPA")], -0.05);
+  EXPECT_EQ(kappa_row[col("FX")], -2000.0);
+  EXPECT_DOUBLE_EQ(kappa_row[col("RL")], 0.2655);  // 0.5 mm less deflection: the axle 0.5 mm higher
+  EXPECT_DOUBLE_EQ(kappa_row[col("RE")], 0.280);
+  EXPECT_EQ(kappa_row[col("SERIES")], 1.0);
+  const auto& alpha_row = table.rows[2];
+  EXPECT_DOUBLE_EQ(alpha_row[col("ALPHA")], 2.0 * std::numbers::pi / 180.0);
+  EXPECT_EQ(alpha_row[col("FY")], -900.0);
+  EXPECT_DOUBLE_EQ(alpha_row[col("MZ")], 15.0);  // N·mm → N·m
+  EXPECT_DOUBLE_EQ(alpha_row[col("MX")], 4.0);
+  EXPECT_DOUBLE_EQ(alpha_row[col("RL")], 0.26475);
+  EXPECT_DOUBLE_EQ(alpha_row[col("PATCH_LENGTH")], 0.150);
+  EXPECT_DOUBLE_EQ(alpha_row[col("PATCH_WIDTH")], 0.120);
+  EXPECT_EQ(alpha_row[col("FACTORIZATIONS")], 3.0);
+  EXPECT_EQ(alpha_row[col("SERIES")], 2.0);
+  EXPECT_EQ(table.rows[0][col("NEWTON_ITERATIONS")], 5.0);
+}
+
+TEST(TyreTestReport, AFailedLoadIsNamedAndTheRestKept) {
+  TyreTestStudy s;
+  s.name = "rig";
+  s.nominal_load = 4000.0;
+  s.load_factors = {0.5, 1.0};
+  RollingResult r = load_result(4000.0);
+  r.completed = false;
+  r.failure = "α sweep κ +0.0000, α +6°: Newton: residual 1e-3";
+  const TyreTestResult t =
+      assemble_tyre_test(s, 285.0, {nullptr, &r}, {"tyre test 'rig_Fz2000' failed: singular", ""}, std::nullopt, "");
+  EXPECT_FALSE(t.completed);
+  ASSERT_EQ(t.failures.size(), 2u);
+  EXPECT_NE(t.failures[0].find("load 2000 N: tyre test 'rig_Fz2000' failed: singular"), std::string::npos);
+  EXPECT_NE(t.failures[1].find("load 4000 N: α sweep"), std::string::npos);
+  EXPECT_EQ(t.rows.size(), 3u);  // the converged points of the second load
+  const toml::table summary = tyre_test_summary(t);
+  EXPECT_EQ(summary["completed"].value<bool>(), false);
+  EXPECT_EQ(summary["loads"].as_array()->size(), 2u);
+}
+
+TEST(TyreTestReport, PointCountAndStudiesPerLoad) {
+  TyreTestStudy s;
+  s.name = "rig";
+  s.nominal_load = 3000.0;
+  s.cambers_deg = {2.0};
+  EXPECT_EQ(tyre_test_points(s), 3 * (1 + 1 + 15 + 15));
+  const RollingStudy r = tyre_test_rolling_study(s, 2);
+  EXPECT_EQ(r.name, "rig_Fz4500");
+  EXPECT_EQ(r.target_load, 4500.0);
+  ASSERT_EQ(r.states.size(), 2u);
+  EXPECT_EQ(r.states[1].camber_deg, 2.0);
+  ASSERT_TRUE(r.sweep && r.angle_sweep);
+  EXPECT_TRUE(r.sweep->hold_load && r.angle_sweep->hold_load);
+  EXPECT_EQ(r.tread_shear, RollingStudy::TreadShear::planar);
+  MeshSettings full;
+  full.half_model = false;
+  full.circumferential_elements = 64;
+  const MeshSettings half = tyre_test_vertical_mesh(full);
+  EXPECT_TRUE(half.half_model);
+  EXPECT_EQ(half.circumferential_elements, 64);
+}
+
+}  // namespace
+}  // namespace tirefem
