@@ -139,7 +139,9 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
   PhaseTimes times;
   times.begin("mesh");
   InflatedTyres tyres(c, progress, [&](const MeshSettings& m, double s) {
-    times.nested(fmt::format("inflation ({} x {}, shared)", m.circumferential_elements, m.meridional_elements), s);
+    times.nested(fmt::format("inflation ({} x {} {}, shared)", m.circumferential_elements, m.meridional_elements,
+                             m.half_model ? "half" : "full"),
+                 s);
   });
   const TyreMesh& tm = tyres.mesh(c.mesh);
   const int equations = tm.mesh.dof_count() - static_cast<int>(tm.fixed_dofs.size());
