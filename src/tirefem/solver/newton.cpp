@@ -124,9 +124,11 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
       out.converged = true;
       // After LU steps the converged state's stability is not known yet: one Cholesky attempt on its
       // tangent tells (and lets the next solve start with Cholesky again if it is stable).
+      // (GMRES steps on the LU have reset shift_: an indefinite tangent must be reported as such, 1e-5
+      // standing for "indefinite" without its size.)
       if (lu_mode_ && it > 0) {
         lu_mode_ = !linear_.factorize_cholesky(problem_.system().tangent(), 0.0);
-        if (!lu_mode_) shift_ = 0.0;
+        shift_ = lu_mode_ ? 10 * kRoundOffShift : 0.0;
       }
       // Steps by GMRES on an earlier factorisation say nothing of this state's tangent: one Cholesky
       // attempt on it tells whether the state is stable, and preconditions the next solve.
