@@ -2,21 +2,24 @@
 
 #include <fmt/format.h>
 
-#include <Eigen/Core>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <numeric>
 #include <stdexcept>
+
+#include <Eigen/Core>
 #include <unsupported/Eigen/NonLinearOptimization>
 #include <unsupported/Eigen/NumericalDiff>
 
-#include "tirefem/magic_formula/evaluator.hpp"
+#include "tirefem/magic_formula/fit_points.hpp"
+#include "tirefem/magic_formula/fit_start_values.hpp"
 
 namespace tirefem {
 namespace {
 
-using Member = double MagicFormulaCoefficients::*;
+using namespace magic_formula_fit;
+using M = MagicFormulaCoefficients;
+using Member = double M::*;
 
 enum class Bound { free, positive, at_most_one };
 
@@ -25,50 +28,42 @@ struct FittedCoefficient {
   const char* key;
   Member member;
   Bound bound = Bound::free;
-  int loads = 1;             // distinct loads needed
-  int cambers = 1;           // distinct inclination angles needed
-  bool both_signs = false;   // slips of both signs needed
-  bool nominal = false;      // fitted in the first pass
-  bool never = false;        // never fitted (see fitter.hpp)
+  int loads = 1;                   // distinct loads needed
+  int cambers = 1;                 // slip sweeps at distinct inclinations needed (gamma = 0 counts)
+  bool both_signs = false;         // slips of both signs needed
+  bool nominal = false;            // fitted in the first pass
+  bool never = false;              // never fitted (see fitter.hpp)
+  bool camber_both_signs = false;  // sweeps at a positive and a negative inclination needed (|gamma| beside gamma)
 };
 
-using M = MagicFormulaCoefficients;
 #define COEF(name, ...) FittedCoefficient{#name, &M::name, __VA_ARGS__}
+constexpr Bound F = Bound::free;
 
 const std::vector<FittedCoefficient>& group_coefficients(FitGroup group) {
   static const std::vector<FittedCoefficient> longitudinal{
       COEF(PCX1, Bound::positive, 1, 1, false, true), COEF(PDX1, Bound::positive, 1, 1, false, true),
-      COEF(PDX2, Bound::free, 2),                      COEF(PDX3, Bound::free, 1, 2),
-      COEF(PEX1, Bound::at_most_one, 1, 1, false, true), COEF(PEX2, Bound::free, 2),
-      COEF(PEX3, Bound::free, 3),                      COEF(PEX4, Bound::free, 1, 1, true),
-      COEF(PKX1, Bound::free, 1, 1, false, true),      COEF(PKX2, Bound::free, 2),
-      COEF(PKX3, Bound::free, 3),                      COEF(PHX1, Bound::free, 1),
-      COEF(PHX2, Bound::free, 2),                      COEF(PVX1, Bound::free, 1),
-      COEF(PVX2, Bound::free, 2)};
+      COEF(PDX2, F, 2), COEF(PDX3, F, 1, 2),
+      COEF(PEX1, Bound::at_most_one, 1, 1, false, true), COEF(PEX2, F, 2), COEF(PEX3, F, 3),
+      COEF(PEX4, F, 1, 1, true),
+      COEF(PKX1, F, 1, 1, false, true), COEF(PKX2, F, 2), COEF(PKX3, F, 3),
+      COEF(PHX1, F, 1), COEF(PHX2, F, 2), COEF(PVX1, F, 1), COEF(PVX2, F, 2)};
   static const std::vector<FittedCoefficient> lateral{
       COEF(PCY1, Bound::positive, 1, 1, false, true), COEF(PDY1, Bound::positive, 1, 1, false, true),
-      COEF(PDY2, Bound::free, 2),                      COEF(PDY3, Bound::free, 1, 3),
-      COEF(PEY1, Bound::at_most_one, 1, 1, false, true), COEF(PEY2, Bound::free, 2),
-      COEF(PEY3, Bound::free, 1, 1, true),             COEF(PEY4, Bound::free, 1, 2, true),
-      COEF(PKY1, Bound::free, 1, 1, false, true),      COEF(PKY2, Bound::positive, 2),
-      COEF(PKY3, Bound::free, 1, 2),                   COEF(PHY1, Bound::free, 1),
-      COEF(PHY2, Bound::free, 2),                      COEF(PHY3, Bound::free, 1, 2),
-      COEF(PVY1, Bound::free, 1),                      COEF(PVY2, Bound::free, 2),
-      COEF(PVY3, Bound::free, 1, 2),                   COEF(PVY4, Bound::free, 2, 2)};
+      COEF(PDY2, F, 2), COEF(PDY3, F, 1, 2),
+      COEF(PEY1, Bound::at_most_one, 1, 1, false, true), COEF(PEY2, F, 2), COEF(PEY3, F, 1, 1, true),
+      COEF(PEY4, F, 1, 2, true),
+      COEF(PKY1, F, 1, 1, false, true), COEF(PKY2, Bound::positive, 2), COEF(PKY3, F, 1, 2),
+      COEF(PHY1, F, 1), COEF(PHY2, F, 2), COEF(PHY3, F, 1, 2),
+      COEF(PVY1, F, 1), COEF(PVY2, F, 2), COEF(PVY3, F, 1, 2), COEF(PVY4, F, 2, 2)};
   static const std::vector<FittedCoefficient> aligning{
-      COEF(QBZ1, Bound::free, 1, 1, false, true),      COEF(QBZ2, Bound::free, 2),
-      COEF(QBZ3, Bound::free, 3),                      COEF(QBZ4, Bound::free, 1, 2),
-      COEF(QBZ5, Bound::free, 1, 3),                   COEF(QBZ9, Bound::free, 1),
-      COEF(QBZ10, Bound::free, 1, 1, false, false, true),
-      COEF(QCZ1, Bound::positive, 1, 1, false, true),  COEF(QDZ1, Bound::free, 1, 1, false, true),
-      COEF(QDZ2, Bound::free, 2),                      COEF(QDZ3, Bound::free, 1, 2),
-      COEF(QDZ4, Bound::free, 1, 3),                   COEF(QDZ6, Bound::free, 1),
-      COEF(QDZ7, Bound::free, 2),                      COEF(QDZ8, Bound::free, 1, 2),
-      COEF(QDZ9, Bound::free, 2, 2),                   COEF(QEZ1, Bound::at_most_one, 1, 1, false, true),
-      COEF(QEZ2, Bound::free, 2),                      COEF(QEZ3, Bound::free, 3),
-      COEF(QEZ4, Bound::free, 1, 1, true),             COEF(QEZ5, Bound::free, 1, 2, true),
-      COEF(QHZ1, Bound::free, 1),                      COEF(QHZ2, Bound::free, 2),
-      COEF(QHZ3, Bound::free, 1, 2),                   COEF(QHZ4, Bound::free, 2, 2)};
+      COEF(QBZ1, F, 1, 1, false, true), COEF(QBZ2, F, 2), COEF(QBZ3, F, 3), COEF(QBZ4, F, 1, 2),
+      COEF(QBZ5, F, 1, 2, false, false, false, true), COEF(QBZ9, F, 1), COEF(QBZ10, F, 1, 1, false, false, true),
+      COEF(QCZ1, Bound::positive, 1, 1, false, true),
+      COEF(QDZ1, F, 1, 1, false, true), COEF(QDZ2, F, 2), COEF(QDZ3, F, 1, 2), COEF(QDZ4, F, 1, 3),
+      COEF(QDZ6, F, 1), COEF(QDZ7, F, 2), COEF(QDZ8, F, 1, 2), COEF(QDZ9, F, 2, 2),
+      COEF(QEZ1, Bound::at_most_one, 1, 1, false, true), COEF(QEZ2, F, 2), COEF(QEZ3, F, 3),
+      COEF(QEZ4, F, 1, 1, true), COEF(QEZ5, F, 1, 2, true),
+      COEF(QHZ1, F, 1), COEF(QHZ2, F, 2), COEF(QHZ3, F, 1, 2), COEF(QHZ4, F, 2, 2)};
   switch (group) {
     case FitGroup::pure_longitudinal: return longitudinal;
     case FitGroup::pure_lateral: return lateral;
@@ -77,6 +72,35 @@ const std::vector<FittedCoefficient>& group_coefficients(FitGroup group) {
   return longitudinal;
 }
 #undef COEF
+
+bool is_camber_term(const FittedCoefficient& f) { return f.cambers > 1; }
+
+// The curvature factor E = (E1 + E2 dfz + E3 dfz^2)(1 - (E4 + E5 gamma) sgn(slip)) (4.E14, 4.E24) is a
+// product of coefficients: with PEY1 = 0.004 and PEY3 = 41.5 the factors are badly scaled and their valley
+// in the least-squares function is curved. The fit therefore uses the curvature on each side,
+// E+ = E1 (1 - E4) and E- = E1 (1 + E4), the load ratios q2 = E2/E1, q3 = E3/E1 and the camber slope
+// g = E1 E5: E = (1 + q2 dfz + q3 dfz^2)(E+- -+ g gamma), linear in each. Back: E1 = (E+ + E-)/2,
+// E4 = (E- - E+)/(E+ + E-), E2 = q2 E1, E3 = q3 E1, E5 = g/E1. (E1 = 0 with E4 != 0 is the formula's own
+// singularity: E+ = -E- is not representable.)
+struct CurvatureTerms {
+  Member e1, e2, e3, e4, e5;  // e3, e5 may be nullptr
+};
+
+const CurvatureTerms* curvature_terms(FitGroup group) {
+  static const CurvatureTerms longitudinal{&M::PEX1, &M::PEX2, &M::PEX3, &M::PEX4, nullptr};
+  static const CurvatureTerms lateral{&M::PEY1, &M::PEY2, nullptr, &M::PEY3, &M::PEY4};
+  if (group == FitGroup::pure_longitudinal) return &longitudinal;
+  if (group == FitGroup::pure_lateral) return &lateral;
+  return nullptr;
+}
+
+enum class Role { plain, e_plus, e_minus, e_single, load_ratio, load_ratio_squared, camber_slope };
+
+struct Parameter {
+  Role role = Role::plain;
+  Member member = nullptr;  // plain
+  Bound bound = Bound::free;
+};
 
 double to_parameter(Bound bound, double value) {
   switch (bound) {
@@ -96,143 +120,80 @@ double from_parameter(Bound bound, double u) {
   return u;
 }
 
-// Distinct values within a relative tolerance (loads) or an absolute one (angles).
-std::vector<double> distinct_values(std::vector<double> values, double tolerance) {
-  std::sort(values.begin(), values.end());
-  std::vector<double> out;
-  for (double v : values)
-    if (out.empty() || std::abs(v - out.back()) > tolerance) out.push_back(v);
-  return out;
-}
-
-struct GroupData {
-  std::vector<TyreTestPoint> points;
-  std::vector<double> loads;  // distinct
-  int camber_levels = 0;
-  bool both_signs = false;
-  double peak = 0;
-};
-
-double measured(FitGroup group, const TyreTestPoint& p) {
-  return group == FitGroup::pure_longitudinal ? p.Fx : (group == FitGroup::pure_lateral ? p.Fy : p.Mz);
-}
-
-double slip(FitGroup group, const TyreTestPoint& p) { return group == FitGroup::pure_longitudinal ? p.kappa : p.alpha; }
-
-double model(FitGroup group, const MagicFormulaCoefficients& c, const TyreTestPoint& p) {
-  switch (group) {
-    case FitGroup::pure_longitudinal: return pure_longitudinal_force(c, p.Fz, p.kappa, p.gamma).Fx0;
-    case FitGroup::pure_lateral: return pure_lateral_force(c, p.Fz, p.alpha, p.gamma).Fy0;
-    case FitGroup::aligning: {
-      const PureLateralForce lateral = pure_lateral_force(c, p.Fz, p.alpha, p.gamma);
-      return pure_aligning_moment(c, p.Fz, p.alpha, p.gamma, lateral).Mz0;
-    }
+// The parameter vector of one pass over the given coefficients.
+std::vector<Parameter> parameters_for(FitGroup group, const std::vector<const FittedCoefficient*>& unknowns) {
+  const CurvatureTerms* e = curvature_terms(group);
+  auto has = [&](Member m) {
+    return m != nullptr && std::any_of(unknowns.begin(), unknowns.end(), [&](auto* f) { return f->member == m; });
+  };
+  std::vector<Parameter> out;
+  for (const FittedCoefficient* f : unknowns) {
+    const bool curvature = e != nullptr && (f->member == e->e1 || f->member == e->e2 || f->member == e->e3 ||
+                                            f->member == e->e4 || f->member == e->e5);
+    if (!curvature) out.push_back({Role::plain, f->member, f->bound});
   }
-  return 0;
-}
-
-GroupData select_points(FitGroup group, std::span<const TyreTestPoint> points) {
-  GroupData data;
-  constexpr double pure_tolerance = 1e-12;
-  std::vector<double> loads, cambers;
-  bool negative = false, positive = false;
-  for (const TyreTestPoint& p : points) {
-    const double other_slip = group == FitGroup::pure_longitudinal ? p.alpha : p.kappa;
-    if (std::abs(other_slip) > pure_tolerance) continue;
-    data.points.push_back(p);
-    loads.push_back(p.Fz);
-    cambers.push_back(p.gamma);
-    negative = negative || slip(group, p) < 0;
-    positive = positive || slip(group, p) > 0;
-    data.peak = std::max(data.peak, std::abs(measured(group, p)));
-  }
-  const double max_load = loads.empty() ? 0.0 : *std::max_element(loads.begin(), loads.end());
-  data.loads = distinct_values(loads, 1e-3 * max_load);
-  data.camber_levels = static_cast<int>(distinct_values(cambers, 1e-6).size());
-  data.both_signs = negative && positive;
-  return data;
-}
-
-// Least-squares line y = a + b x (b = 0 with a single x).
-std::pair<double, double> fit_line(const std::vector<double>& x, const std::vector<double>& y) {
-  const double n = static_cast<double>(x.size());
-  const double mx = std::accumulate(x.begin(), x.end(), 0.0) / n;
-  const double my = std::accumulate(y.begin(), y.end(), 0.0) / n;
-  double sxx = 0, sxy = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    sxx += (x[i] - mx) * (x[i] - mx);
-    sxy += (x[i] - mx) * (y[i] - my);
-  }
-  const double b = sxx > 0 ? sxy / sxx : 0.0;
-  return {my - b * mx, b};
-}
-
-struct LoadLevelFeatures {
-  double dfz, Fz, peak, slope, trail;
-};
-
-// Per load: the peak |F|, the slope through the two slips nearest zero and the trail -Mz/Fy there.
-std::vector<LoadLevelFeatures> load_level_features(FitGroup group, const GroupData& data, double Fz0) {
-  std::vector<LoadLevelFeatures> out;
-  for (double load : data.loads) {
-    std::vector<const TyreTestPoint*> level;
-    for (const TyreTestPoint& p : data.points)
-      if (std::abs(p.Fz - load) <= 1e-3 * load) level.push_back(&p);
-    std::sort(level.begin(), level.end(), [&](auto* a, auto* b) { return std::abs(slip(group, *a)) < std::abs(slip(group, *b)); });
-    LoadLevelFeatures f{(load - Fz0) / Fz0, load, 0, 0, 0};
-    for (auto* p : level) f.peak = std::max(f.peak, std::abs(group == FitGroup::pure_longitudinal ? p->Fx : p->Fy));
-    if (level.size() >= 2) {
-      const TyreTestPoint* a = level[0];
-      const TyreTestPoint* b = level[1];
-      for (std::size_t i = 1; i < level.size() && slip(group, *b) == slip(group, *a); ++i) b = level[i];
-      const double ds = slip(group, *b) - slip(group, *a);
-      if (ds != 0) f.slope = (measured(group == FitGroup::aligning ? FitGroup::pure_lateral : group, *b) -
-                              measured(group == FitGroup::aligning ? FitGroup::pure_lateral : group, *a)) / ds;
-    }
-    for (auto* p : level)
-      if (p->alpha != 0 && p->Fy != 0) {
-        f.trail = -p->Mz / p->Fy;
-        break;
-      }
-    out.push_back(f);
-  }
-  return out;
-}
-
-void set_start_values(FitGroup group, const GroupData& data, MagicFormulaCoefficients& c) {
-  const double Fz0 = c.FNOMIN * c.LFZO;
-  const auto levels = load_level_features(group, data, Fz0);
-  std::vector<double> dfz, mu, stiffness, trail;
-  for (const auto& l : levels) {
-    dfz.push_back(l.dfz);
-    mu.push_back(l.peak / l.Fz);
-    stiffness.push_back(l.slope / l.Fz);
-    trail.push_back(l.trail * Fz0 / (l.Fz * c.UNLOADED_RADIUS));
-  }
-  for (const FittedCoefficient& f : group_coefficients(group)) c.*(f.member) = 0;
-  const auto [mu0, mu1] = fit_line(dfz, mu);
-  if (group == FitGroup::pure_longitudinal) {
-    const auto [k0, k1] = fit_line(dfz, stiffness);
-    c.PCX1 = 1.6;
-    c.PDX1 = std::max(mu0, 0.1) / c.LMUX;
-    c.PDX2 = mu1 / c.LMUX;
-    c.PKX1 = k0 / c.LKX;
-    c.PKX2 = k1 / c.LKX;
-  } else if (group == FitGroup::pure_lateral) {
-    c.PCY1 = 1.3;
-    c.PDY1 = std::max(mu0, 0.1) / c.LMUY;
-    c.PDY2 = mu1 / c.LMUY;
-    c.PKY2 = 1.5;
-    double sum = 0;
-    for (const auto& l : levels) sum += l.slope / (Fz0 * std::sin(2 * std::atan(l.Fz / (c.PKY2 * Fz0))) * c.LKY);
-    c.PKY1 = sum / static_cast<double>(levels.size());
+  if (e == nullptr || !has(e->e1)) return out;
+  if (has(e->e4)) {
+    out.push_back({Role::e_plus, nullptr, Bound::at_most_one});
+    out.push_back({Role::e_minus, nullptr, Bound::at_most_one});
   } else {
-    const auto [t0, t1] = fit_line(dfz, trail);
-    c.QBZ1 = 10;
-    c.QCZ1 = 1.2;
-    c.QDZ1 = t0 / c.LTR;
-    c.QBZ9 = 10;
+    out.push_back({Role::e_single, nullptr, Bound::at_most_one});
   }
+  if (has(e->e2)) out.push_back({Role::load_ratio});
+  if (has(e->e3)) out.push_back({Role::load_ratio_squared});
+  if (has(e->e5)) out.push_back({Role::camber_slope});
+  return out;
+}
+
+Eigen::VectorXd initial_parameters(FitGroup group, const std::vector<Parameter>& parameters, const M& c) {
+  const CurvatureTerms* e = curvature_terms(group);
+  Eigen::VectorXd u(static_cast<Eigen::Index>(parameters.size()));
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    const Parameter& p = parameters[i];
+    double value = 0;
+    if (p.role == Role::plain) {
+      value = c.*(p.member);
+    } else {
+      const double E1 = c.*(e->e1), E4 = c.*(e->e4);
+      switch (p.role) {
+        case Role::e_plus: value = E1 * (1 - E4); break;
+        case Role::e_minus: value = E1 * (1 + E4); break;
+        case Role::e_single: value = E1; break;
+        case Role::load_ratio: value = E1 != 0 ? c.*(e->e2) / E1 : 0.0; break;
+        case Role::load_ratio_squared: value = E1 != 0 ? c.*(e->e3) / E1 : 0.0; break;
+        case Role::camber_slope: value = E1 * c.*(e->e5); break;
+        case Role::plain: break;
+      }
+    }
+    u[static_cast<Eigen::Index>(i)] = to_parameter(p.bound, value);
+  }
+  return u;
+}
+
+void apply_parameters(FitGroup group, const std::vector<Parameter>& parameters, const Eigen::VectorXd& u, M& c) {
+  const CurvatureTerms* e = curvature_terms(group);
+  double e_plus = 0, e_minus = 0, e_single = 0, q2 = 0, q3 = 0, g = 0;
+  bool split = false, single = false, load = false, load_squared = false, camber = false;
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    const Parameter& p = parameters[i];
+    const double value = from_parameter(p.bound, u[static_cast<Eigen::Index>(i)]);
+    switch (p.role) {
+      case Role::plain: c.*(p.member) = value; break;
+      case Role::e_plus: e_plus = value, split = true; break;
+      case Role::e_minus: e_minus = value; break;
+      case Role::e_single: e_single = value, single = true; break;
+      case Role::load_ratio: q2 = value, load = true; break;
+      case Role::load_ratio_squared: q3 = value, load_squared = true; break;
+      case Role::camber_slope: g = value, camber = true; break;
+    }
+  }
+  if (e == nullptr || !(split || single)) return;
+  const double E1 = split ? 0.5 * (e_plus + e_minus) : e_single;
+  c.*(e->e1) = E1;
+  if (split) c.*(e->e4) = E1 != 0 ? (e_minus - e_plus) / (2 * E1) : 0.0;
+  if (load) c.*(e->e2) = q2 * E1;
+  if (load_squared) c.*(e->e3) = q3 * E1;
+  if (camber) c.*(e->e5) = E1 != 0 ? g / E1 : 0.0;
 }
 
 struct ResidualFunctor {
@@ -243,22 +204,22 @@ struct ResidualFunctor {
   enum { InputsAtCompileTime = Eigen::Dynamic, ValuesAtCompileTime = Eigen::Dynamic };
 
   FitGroup group;
-  const GroupData* data;
-  std::vector<const FittedCoefficient*> unknowns;
-  MagicFormulaCoefficients base;
+  const GroupPoints* data;
+  std::vector<Parameter> parameters;
+  M base;
 
-  int inputs() const { return static_cast<int>(unknowns.size()); }
+  int inputs() const { return static_cast<int>(parameters.size()); }
   int values() const { return static_cast<int>(data->points.size()); }
 
-  MagicFormulaCoefficients coefficients(const Eigen::VectorXd& u) const {
-    MagicFormulaCoefficients c = base;
-    for (std::size_t i = 0; i < unknowns.size(); ++i)
-      c.*(unknowns[i]->member) = from_parameter(unknowns[i]->bound, u[static_cast<Eigen::Index>(i)]);
+  M coefficients(const Eigen::VectorXd& u) const {
+    M c = base;
+    apply_parameters(group, parameters, u, c);
     return c;
   }
 
+  // Residuals relative to the channel's peak.
   int operator()(const Eigen::VectorXd& u, Eigen::VectorXd& residual) const {
-    const MagicFormulaCoefficients c = coefficients(u);
+    const M c = coefficients(u);
     for (std::size_t i = 0; i < data->points.size(); ++i) {
       const TyreTestPoint& p = data->points[i];
       residual[static_cast<Eigen::Index>(i)] = (model(group, c, p) - measured(group, p)) / data->peak;
@@ -267,22 +228,28 @@ struct ResidualFunctor {
   }
 };
 
-int run_levenberg_marquardt(ResidualFunctor& functor, MagicFormulaCoefficients& c, bool& converged) {
-  Eigen::VectorXd u(functor.inputs());
-  for (std::size_t i = 0; i < functor.unknowns.size(); ++i)
-    u[static_cast<Eigen::Index>(i)] = to_parameter(functor.unknowns[i]->bound, c.*(functor.unknowns[i]->member));
-  Eigen::NumericalDiff<ResidualFunctor, Eigen::Central> numerical(functor);
-  Eigen::LevenbergMarquardt<Eigen::NumericalDiff<ResidualFunctor, Eigen::Central>> lm(numerical);
+bool converged_status(Eigen::LevenbergMarquardtSpace::Status status) {
+  using namespace Eigen::LevenbergMarquardtSpace;
+  return status == RelativeReductionTooSmall || status == RelativeErrorTooSmall ||
+         status == RelativeErrorAndReductionTooSmall || status == FtolTooSmall || status == XtolTooSmall ||
+         status == CosinusTooSmall;
+}
+
+// One Levenberg-Marquardt solve. Central differences with the step eps^(1/3)|u| (epsfcn = eps^(2/3)): the
+// Jacobian to ~1e-11, whose error slows the last iterations a little but does not move the solution (for
+// noise-free data the residual is zero there). Column scaling (Eigen's mode 1) from the Jacobian's norms.
+int run_levenberg_marquardt(FitGroup group, const GroupPoints& data, const std::vector<const FittedCoefficient*>& unknowns,
+                            M& c, bool& converged) {
+  ResidualFunctor functor{group, &data, parameters_for(group, unknowns), c};
+  Eigen::VectorXd u = initial_parameters(group, functor.parameters, c);
+  using Numerical = Eigen::NumericalDiff<ResidualFunctor, Eigen::Central>;
+  Numerical numerical(functor, 3.7e-11);
+  Eigen::LevenbergMarquardt<Numerical> lm(numerical);
   lm.parameters.ftol = 1e-15;
   lm.parameters.xtol = 1e-15;
-  lm.parameters.maxfev = 4000;
+  lm.parameters.maxfev = 2000;
   const auto status = lm.minimize(u);
-  converged = status == Eigen::LevenbergMarquardtSpace::RelativeReductionTooSmall ||
-              status == Eigen::LevenbergMarquardtSpace::RelativeErrorTooSmall ||
-              status == Eigen::LevenbergMarquardtSpace::RelativeErrorAndReductionTooSmall ||
-              status == Eigen::LevenbergMarquardtSpace::FtolTooSmall ||
-              status == Eigen::LevenbergMarquardtSpace::XtolTooSmall ||
-              status == Eigen::LevenbergMarquardtSpace::CosinusTooSmall;
+  converged = converged_status(status);
   c = functor.coefficients(u);
   return static_cast<int>(lm.nfev + lm.njev * (2 * functor.inputs()));
 }
@@ -296,41 +263,44 @@ const char* channel_name(FitGroup group) {
 GroupFitResult fit_coefficient_group(FitGroup group, std::span<const TyreTestPoint> points,
                                      MagicFormulaCoefficients& c) {
   const auto start_time = std::chrono::steady_clock::now();
-  const GroupData data = select_points(group, points);
+  const GroupPoints pure = select_points(group, points, false);
+  const GroupPoints all = select_points(group, points, true);
   GroupFitResult result;
   result.group = group;
 
-  std::vector<const FittedCoefficient*> determined, nominal;
+  std::vector<const FittedCoefficient*> nominal, uncambered, determined;
   for (const FittedCoefficient& f : group_coefficients(group)) {
-    const bool ok = !f.never && static_cast<int>(data.loads.size()) >= f.loads && data.camber_levels >= f.cambers &&
-                    (!f.both_signs || data.both_signs);
+    const GroupPoints& data = is_camber_term(f) ? all : pure;
+    const bool ok = !f.never && static_cast<int>(data.loads.size()) >= f.loads &&
+                    (!is_camber_term(f) || all.camber_sweeps >= f.cambers) && (!f.both_signs || data.both_signs) &&
+                    (!f.camber_both_signs || all.camber_both_signs);
     (ok ? result.fitted : result.not_determined).emplace_back(f.key);
-    if (ok) determined.push_back(&f);
-    if (ok && f.nominal) nominal.push_back(&f);
+    c.*(f.member) = 0;  // neutral value (every coefficient of the three groups is 0 when neutral)
+    if (!ok) continue;
+    determined.push_back(&f);
+    if (!is_camber_term(f)) uncambered.push_back(&f);
+    if (f.nominal) nominal.push_back(&f);
   }
-  if (data.points.size() < determined.size() + 1 || data.peak == 0)
+  if (all.points.size() < determined.size() + 1 || all.peak == 0)
     throw std::invalid_argument(fmt::format("Magic Formula fit of {}: {} usable points for {} coefficients",
-                                            channel_name(group), data.points.size(), determined.size()));
+                                            channel_name(group), all.points.size(), determined.size()));
 
-  set_start_values(group, data, c);
+  set_start_values(group, pure, c);
   int evaluations = 0;
   bool converged = false;
-  for (const auto* unknowns : {&nominal, &determined}) {
-    ResidualFunctor functor{{}, {}, {}, {}};
-    functor.group = group;
-    functor.data = &data;
-    functor.unknowns = *unknowns;
-    functor.base = c;
-    evaluations += run_levenberg_marquardt(functor, c, converged);
-  }
+  // Passes: the nominal-load coefficients, then all without camber on the gamma = 0 points, then (with
+  // camber sweeps) all on all points.
+  evaluations += run_levenberg_marquardt(group, pure, nominal, c, converged);
+  evaluations += run_levenberg_marquardt(group, pure, uncambered, c, converged);
+  if (determined.size() > uncambered.size()) evaluations += run_levenberg_marquardt(group, all, determined, c, converged);
 
   double sum = 0;
-  for (const TyreTestPoint& p : data.points) sum += std::pow(model(group, c, p) - measured(group, p), 2);
+  for (const TyreTestPoint& p : all.points) sum += std::pow(model(group, c, p) - measured(group, p), 2);
   result.error.channel = channel_name(group);
-  result.error.points = static_cast<int>(data.points.size());
-  result.error.rms = std::sqrt(sum / static_cast<double>(data.points.size()));
-  result.error.peak = data.peak;
-  result.error.relative_rms = result.error.rms / data.peak;
+  result.error.points = static_cast<int>(all.points.size());
+  result.error.rms = std::sqrt(sum / static_cast<double>(all.points.size()));
+  result.error.peak = all.peak;
+  result.error.relative_rms = result.error.rms / all.peak;
   result.function_evaluations = evaluations;
   result.converged = converged;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
