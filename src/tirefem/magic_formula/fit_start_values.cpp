@@ -11,10 +11,10 @@ struct LoadLevelFeatures {
   double Fz = 0, dfz = 0;
   double peak = 0;            // max |F| (Fx or Fy)
   double at_largest_slip = 0; // |F| at the largest |slip|
-  double slope = 0;           // dF/dslip at zero slip (secant through the two slips nearest zero)
-  double at_zero = 0;         // F at zero slip (linear interpolation between the same two points)
-  double trail = 0;           // -dMz/dFy between the same two points
-  double residual_moment = 0; // Mz + t Fy at zero slip
+  double slope = 0;           // dF/dslip at zero slip
+  double at_zero = 0;         // F at zero slip
+  double trail = 0;           // -dMz/dFy near zero slip
+  double residual_moment = 0; // Mz where Fy = 0
 };
 
 // Features of one load's gamma = 0 points; the force channel is Fx for the longitudinal group, Fy else.
@@ -30,23 +30,24 @@ LoadLevelFeatures load_level_features(FitGroup group, const GroupPoints& data, d
   f.dfz = (load - Fz0) / Fz0;
   for (auto* p : level) f.peak = std::max(f.peak, std::abs(measured(force, *p)));
   if (!level.empty()) f.at_largest_slip = std::abs(measured(force, *level.back()));
-  if (level.size() < 2) return f;
-  const TyreTestPoint* a = level[0];
-  const TyreTestPoint* b = nullptr;
-  for (auto* p : level)
-    if (slip(group, *p) != slip(group, *a)) {
-      b = p;
-      break;
-    }
-  if (b == nullptr) return f;
-  const double ds = slip(group, *b) - slip(group, *a);
-  f.slope = (measured(force, *b) - measured(force, *a)) / ds;
-  f.at_zero = measured(force, *a) - f.slope * slip(group, *a);
+  // Least-squares lines through the (up to) 5 points nearest zero slip: F(slip) for the slope and F(0),
+  // Mz(Fy) for the trail and the residual moment. More than two points keep a 1%
+  // noise from spoiling the start.
+  const std::size_t n = std::min<std::size_t>(level.size(), 5);
+  std::vector<double> s, F, Mz;
+  for (std::size_t i = 0; i < n; ++i) {
+    s.push_back(slip(group, *level[i]));
+    F.push_back(measured(force, *level[i]));
+    Mz.push_back(level[i]->Mz);
+  }
+  if (distinct_values(s, 0.0).size() < 2) return f;
+  const auto [F0, dF] = fit_line(s, F);
+  f.slope = dF;
+  f.at_zero = F0;
   if (group == FitGroup::aligning) {
-    const double dFy = b->Fy - a->Fy;
-    f.trail = dFy != 0 ? -(b->Mz - a->Mz) / dFy : 0.0;
-    const double Mz_at_zero = a->Mz - (b->Mz - a->Mz) / ds * slip(group, *a);
-    f.residual_moment = Mz_at_zero + f.trail * f.at_zero;
+    const auto [M0, dM] = fit_line(F, Mz);
+    f.trail = -dM;
+    f.residual_moment = M0;  // Mz = -t Fy + Mzr (4.E31): Mzr is Mz where Fy = 0
   }
   return f;
 }
