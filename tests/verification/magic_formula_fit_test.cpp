@@ -125,6 +125,9 @@ TEST(MagicFormulaFit, StaysCloseWithOnePercentNoise) {
     std::printf("%s with noise: rms %.3g of peak, curve error %.3g of peak, %.3f s\n", g.error.channel.c_str(),
                 g.error.relative_rms, error, g.seconds);
     // The residual is the noise itself (1% of the peak), the fitted curve lies well inside it.
+    // Measured (20 noise seeds, every fit converged to the least-squares minimum): the largest curve error
+    // over the 123 states is 0.55-1.46% for Fx, 0.49-1.19% for Fy, 0.63-1.38% for Mz, above 1% in about a
+    // third of the seeds per channel; with this seed Fy is 1.19%. The bound is kept as set in advance.
     EXPECT_NEAR(g.error.relative_rms, 0.01, 0.002) << g.error.channel;
     EXPECT_LE(error, 0.01) << g.error.channel;
     EXPECT_LT(g.seconds, 1.0) << g.error.channel;

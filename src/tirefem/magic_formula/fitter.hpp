@@ -3,25 +3,33 @@
 // gamma, Fx, Fy, Mz), W-axis system, SI units.
 //
 // Library: Eigen's Levenberg-Marquardt (unsupported/Eigen/NonLinearOptimization) with a central-difference
-// Jacobian (NumericalDiff): already a dependency through libeigen3-dev, and a group has at most ~20
-// unknowns and a few hundred residuals, where Ceres' sparse machinery, automatic derivatives and robust
-// losses buy nothing.
+// Jacobian (NumericalDiff, step eps^(1/3)|u|): already a dependency through libeigen3-dev, and a group has
+// at most ~25 unknowns and a few hundred residuals, where Ceres' sparse machinery, automatic derivatives
+// and robust losses buy nothing. For noise-free data the residual is zero at the solution, so the
+// Jacobian's ~1e-11 error does not move it.
 //
 // Groups, fitted in this order (the aligning moment needs the fitted lateral force):
-// - pure longitudinal (points with alpha = 0): PCX1, PDX1-3, PEX1-4, PKX1-3, PHX1-2, PVX1-2 on Fx;
+// - pure longitudinal (points with alpha = 0 and gamma = 0): PCX1, PDX1-2, PEX1-4, PKX1-3, PHX1-2, PVX1-2
+//   on Fx (PDX3 never: no cambered kappa sweeps are used);
 // - pure lateral (points with kappa = 0): PCY1, PDY1-3, PEY1-4, PKY1-3, PHY1-3, PVY1-4 on Fy;
 // - aligning (points with kappa = 0): QBZ1-5, QBZ9, QCZ1, QDZ1-4, QDZ6-9, QEZ1-5, QHZ1-4 on Mz.
 // A coefficient is fitted only when the data determine it: load variations need 2 (linear) or 3
-// (quadratic, exponential) distinct loads, camber terms 2 (or 3 for |gamma| and gamma^2 terms) distinct
-// inclination angles, the sign-dependent curvature terms (PEX4, PEY3, QEZ4) slips of both signs. QBZ10 is
-// never fitted: it multiplies By Cy, nearly proportional to QBZ9 over a rig's loads. A coefficient not
-// fitted is set to its neutral value and listed in `not_determined`.
-// Bounds by parameter transformation: C > 0 and D > 0 (PCX1, PDX1, PCY1, PDY1, QCZ1 = exp(u)), E <= 1 at
-// the nominal load (PEX1, PEY1, QEZ1 = 1 - exp(u)); the evaluator limits E <= 1 at other loads.
-// Start values from the data: per load the peak |F| gives mu (PDX1, PDX2), the slope through the two
-// smallest slips gives Kxk/Fz and Kya (PKX1, PKX2, PKY1), the trail -Mz/Fy at the smallest slip angle gives
-// QDZ1; shape and curvature factors start at typical values. A first pass fits only the nominal-load
-// coefficients (C, D, E, K), a second all determined ones.
+// (quadratic, exponential) distinct loads; camber terms slip sweeps (>= 2 slips of each sign) at 2 distinct
+// inclinations (gamma = 0 counts), QDZ4 (gamma^2 beside QDZ3 gamma) at 3, QBZ5 (|gamma| beside QBZ4 gamma)
+// at a positive and a negative one; a free-rolling cambered point alone determines none. The
+// sign-dependent terms (PEX4, PEY3, PEY4, QEZ4, QEZ5) need slips of both signs. QBZ10 is never fitted: it
+// multiplies By Cy, nearly proportional to QBZ9 over a rig's loads. A coefficient not fitted is set to
+// its neutral value and listed in `not_determined`.
+// Parametrisation: the curvature factors E (4.E14, 4.E24) are fitted as E+ = E1(1 - E4), E- = E1(1 + E4),
+// E2/E1, E3/E1 and E1 E5 and converted back (fitter.cpp): the products of coefficients are badly scaled
+// (PEY1 = 0.004, PEY3 = 41.5 in a public file) and made the plain fit stall. Bounds by transformation:
+// C > 0, D > 0 (PCX1, PDX1, PCY1, PDY1, QCZ1 = exp(u)), PKY2 > 0, E+-, QEZ1 <= 1 (1 - exp(u)); the
+// evaluator limits E <= 1 at other loads.
+// Start values from the data (fit_start_values.cpp): per load, least-squares lines through the 5 slips
+// nearest zero give the slip stiffness (PKX1-2; PKY2 from the ratio at two loads, then PKY1), the shift
+// (PHX, PHY) and the trail -dMz/dFy and residual moment (QDZ1-2, QDZ6-7); the peak |F| gives mu (PDX1-2,
+// PDY1-2), the fall after the peak C. Passes: the nominal-load coefficients, then all without camber on the
+// gamma = 0 points, then (with cambered sweeps) all on all points.
 #include <span>
 #include <string>
 #include <vector>

@@ -36,7 +36,7 @@ struct RollingRadiusPoint {
 ChannelFitError fit_load_deflection(std::span<const LoadDeflectionPoint> points, MagicFormulaCoefficients& c,
                                     std::vector<std::string>& not_determined);
 
-// Sets BREFF, DREFF, FREFF (Q_RE0 = 1); the error is of Re (m).
+// Sets BREFF, DREFF, FREFF (Q_RE0 = 1); the error is of Re (m), its peak the largest fall R0 - Re.
 ChannelFitError fit_effective_rolling_radius(std::span<const RollingRadiusPoint> points, MagicFormulaCoefficients& c,
                                              std::vector<std::string>& not_determined);
 
