@@ -1,0 +1,36 @@
+#pragma once
+// The points a coefficient group is fitted to, and what they contain (loads, camber sweeps, slip signs).
+// Internal to the fitter (fitter.cpp, fit_start_values.cpp).
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "tirefem/magic_formula/fitter.hpp"
+
+namespace tirefem::magic_formula_fit {
+
+struct GroupPoints {
+  std::vector<TyreTestPoint> points;
+  std::vector<double> loads;        // distinct loads
+  int camber_sweeps = 0;            // distinct inclinations with a slip sweep of both signs (0 counts)
+  bool camber_both_signs = false;   // sweeps at a positive and at a negative inclination
+  bool both_signs = false;          // slips of both signs
+  double peak = 0;                  // max |measured|
+};
+
+// The group's channel (Fx, Fy or Mz) and slip (kappa or alpha) of a point.
+double measured(FitGroup group, const TyreTestPoint& p);
+double slip(FitGroup group, const TyreTestPoint& p);
+// The pure-slip model value of the group's channel.
+double model(FitGroup group, const MagicFormulaCoefficients& c, const TyreTestPoint& p);
+
+// Pure-slip points of the group: longitudinal alpha = 0 and gamma = 0; lateral and aligning kappa = 0, and
+// gamma = 0 unless `with_camber`.
+GroupPoints select_points(FitGroup group, std::span<const TyreTestPoint> points, bool with_camber);
+
+// Distinct values: neighbours in sorted order further apart than `tolerance`.
+std::vector<double> distinct_values(std::vector<double> values, double tolerance);
+// Least-squares line y = a + b x, returned as {a, b} (b = 0 with a single distinct x).
+std::pair<double, double> fit_line(const std::vector<double>& x, const std::vector<double>& y);
+
+}  // namespace tirefem::magic_formula_fit
