@@ -20,6 +20,7 @@
 #include "tirefem/analysis/shared_states.hpp"
 #include "tirefem/analysis/study_reports.hpp"
 #include "tirefem/analysis/tyre_test.hpp"
+#include "tirefem/analysis/tyre_test_fit.hpp"
 #include "tirefem/case/tyre_reader.hpp"
 #include "tirefem/io/json_summary.hpp"
 #include "tirefem/io/results_folder.hpp"
@@ -444,8 +445,14 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
       report(progress, fmt::format("warning: tyre test '{}': {} (converged points kept)", s.name, m));
       incomplete.push_back(fmt::format("tyre test '{}': {}", s.name, m));
     }
-    plots.attempt("tyre test '" + s.name + "'", [&] { write_tyre_test(folder, plots, t); });
-    rig_summaries.push_back(tyre_test_summary(t));
+    // The Magic Formula of the converged points (a rig that stopped short is fitted on what it has).
+    std::optional<TyreTestFit> fit;
+    plots.attempt("tyre test '" + s.name + "': Magic Formula fit", [&] {
+      fit = fit_tyre_test(t, c.tyre, c.source.filename().string());
+      report(progress, tyre_test_fit_line(t, *fit));
+    });
+    plots.attempt("tyre test '" + s.name + "'", [&] { write_tyre_test(folder, plots, t, fit ? &*fit : nullptr); });
+    rig_summaries.push_back(tyre_test_summary(t, fit ? &*fit : nullptr));
   }
   if (!c.tyre_tests.empty()) summary.insert("tyre_tests", std::move(rig_summaries));
   times.end();

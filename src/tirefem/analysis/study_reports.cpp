@@ -9,6 +9,7 @@
 #include "tirefem/results/cornering_report.hpp"
 #include "tirefem/results/rolling_report.hpp"
 #include "tirefem/results/shell_results.hpp"
+#include "tirefem/magic_formula/tir_writer.hpp"
 #include "tirefem/results/tyre_test_report.hpp"
 
 namespace tirefem {
@@ -102,13 +103,14 @@ void write_rolling(const ResultsFolder& folder, ReportWriter& plots, const TyreM
   plots.plot(n + "_belt_tension", circumferential_belt_plot(table));
 }
 
-void write_tyre_test(const ResultsFolder& folder, ReportWriter& plots, const TyreTestResult& t) {
+void write_tyre_test(const ResultsFolder& folder, ReportWriter& plots, const TyreTestResult& t, const TyreTestFit* fit) {
   write_csv(folder.path(t.name + "/tyre_test.csv"), tyre_test_table(t));
   if (t.vertical) write_csv(folder.path(t.name + "/vertical.csv"), tyre_test_vertical_table(t));
-  plots.plot(t.name + "_fx_kappa", tyre_test_fx_plot(t));
-  plots.plot(t.name + "_fy_alpha", tyre_test_fy_plot(t));
-  plots.plot(t.name + "_mz_alpha", tyre_test_mz_plot(t));
-  plots.plot(t.name + "_vertical", tyre_test_vertical_plot(t));
+  if (fit) write_tir_file(folder.path(t.name + "/" + t.name + ".tir"), fit->tir);
+  plots.plot(t.name + "_fx_kappa", tyre_test_fx_plot(t, fit));
+  plots.plot(t.name + "_fy_alpha", tyre_test_fy_plot(t, fit));
+  plots.plot(t.name + "_mz_alpha", tyre_test_mz_plot(t, fit));
+  plots.plot(t.name + "_vertical", tyre_test_vertical_plot(t, fit));
 }
 
 }  // namespace tirefem

@@ -7,6 +7,7 @@
 #include "tirefem/analysis/footprint.hpp"
 #include "tirefem/analysis/rolling.hpp"
 #include "tirefem/analysis/tyre_test.hpp"
+#include "tirefem/analysis/tyre_test_fit.hpp"
 #include "tirefem/analysis/run_case.hpp"
 #include "tirefem/io/plot_writer.hpp"
 #include "tirefem/io/results_folder.hpp"
@@ -54,8 +55,9 @@ void write_loaded_state(const ResultsFolder& folder, ReportWriter& plots, const 
 void write_rolling(const ResultsFolder& folder, ReportWriter& plots, const TyreMesh& tm, const Case& c,
                    const RollingResult& r);
 
-// A tyre test: NAME/tyre_test.csv (the measurement table), NAME/vertical.csv, and the plots of FX(κ),
-// FY(α), MZ(α) at every load and of the vertical characteristic.
-void write_tyre_test(const ResultsFolder& folder, ReportWriter& plots, const TyreTestResult& t);
+// A tyre test: NAME/tyre_test.csv (the measurement table), NAME/vertical.csv, with a fit NAME/NAME.tir, and
+// the plots of FX(κ), FY(α), MZ(α) at every load and of the vertical characteristic (with the fitted curves).
+void write_tyre_test(const ResultsFolder& folder, ReportWriter& plots, const TyreTestResult& t,
+                     const TyreTestFit* fit = nullptr);
 
 }  // namespace tirefem

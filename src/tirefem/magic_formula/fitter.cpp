@@ -21,7 +21,10 @@ using namespace magic_formula_fit;
 using M = MagicFormulaCoefficients;
 using Member = double M::*;
 
-enum class Bound { free, positive, at_most_one };
+// friction: a peak friction coefficient D/Fz (PDX1, PDY1) within [0.5, 1.25] × the largest |F|/Fz of the
+// data. Without it, data that approach their friction limit without a peak (a Coulomb tread: F → μ Fz as the
+// slip grows) are fitted as well by a far larger D with a small C, which extrapolates badly.
+enum class Bound { free, positive, at_most_one, friction };
 
 // What a coefficient needs from the data to be determined.
 struct FittedCoefficient {
@@ -41,14 +44,14 @@ constexpr Bound F = Bound::free;
 
 const std::vector<FittedCoefficient>& group_coefficients(FitGroup group) {
   static const std::vector<FittedCoefficient> longitudinal{
-      COEF(PCX1, Bound::positive, 1, 1, false, true), COEF(PDX1, Bound::positive, 1, 1, false, true),
+      COEF(PCX1, Bound::positive, 1, 1, false, true), COEF(PDX1, Bound::friction, 1, 1, false, true),
       COEF(PDX2, F, 2), COEF(PDX3, F, 1, 2),
       COEF(PEX1, Bound::at_most_one, 1, 1, false, true), COEF(PEX2, F, 2), COEF(PEX3, F, 3),
       COEF(PEX4, F, 1, 1, true),
       COEF(PKX1, F, 1, 1, false, true), COEF(PKX2, F, 2), COEF(PKX3, F, 3),
       COEF(PHX1, F, 1), COEF(PHX2, F, 2), COEF(PVX1, F, 1), COEF(PVX2, F, 2)};
   static const std::vector<FittedCoefficient> lateral{
-      COEF(PCY1, Bound::positive, 1, 1, false, true), COEF(PDY1, Bound::positive, 1, 1, false, true),
+      COEF(PCY1, Bound::positive, 1, 1, false, true), COEF(PDY1, Bound::friction, 1, 1, false, true),
       COEF(PDY2, F, 2), COEF(PDY3, F, 1, 2),
       COEF(PEY1, Bound::at_most_one, 1, 1, false, true), COEF(PEY2, F, 2), COEF(PEY3, F, 1, 1, true),
       COEF(PEY4, F, 1, 2, true),
@@ -100,29 +103,39 @@ struct Parameter {
   Role role = Role::plain;
   Member member = nullptr;  // plain
   Bound bound = Bound::free;
+  double lower = 0, upper = 0;  // Bound::friction
 };
 
-double to_parameter(Bound bound, double value) {
-  switch (bound) {
+double to_parameter(const Parameter& p, double value) {
+  switch (p.bound) {
     case Bound::positive: return std::log(std::max(value, 1e-6));
     case Bound::at_most_one: return std::log(std::max(1.0 - value, 1e-6));
+    case Bound::friction: {
+      const double t = std::clamp((value - p.lower) / (p.upper - p.lower), 1e-6, 1 - 1e-6);
+      return std::log(t / (1 - t));
+    }
     case Bound::free: return value;
   }
   return value;
 }
 
-double from_parameter(Bound bound, double u) {
-  switch (bound) {
+double from_parameter(const Parameter& p, double u) {
+  switch (p.bound) {
     case Bound::positive: return std::exp(u);
     case Bound::at_most_one: return 1.0 - std::exp(u);
+    case Bound::friction: return p.lower + (p.upper - p.lower) / (1 + std::exp(-u));
     case Bound::free: return u;
   }
   return u;
 }
 
 // The parameter vector of one pass over the given coefficients.
-std::vector<Parameter> parameters_for(FitGroup group, const std::vector<const FittedCoefficient*>& unknowns) {
+std::vector<Parameter> parameters_for(FitGroup group, const GroupPoints& data,
+                                      const std::vector<const FittedCoefficient*>& unknowns) {
   const CurvatureTerms* e = curvature_terms(group);
+  double friction = 0;  // the largest |F|/Fz of the data
+  for (const TyreTestPoint& p : data.points)
+    if (p.Fz > 0) friction = std::max(friction, std::abs(measured(group, p)) / p.Fz);
   auto has = [&](Member m) {
     return m != nullptr && std::any_of(unknowns.begin(), unknowns.end(), [&](auto* f) { return f->member == m; });
   };
@@ -130,7 +143,7 @@ std::vector<Parameter> parameters_for(FitGroup group, const std::vector<const Fi
   for (const FittedCoefficient* f : unknowns) {
     const bool curvature = e != nullptr && (f->member == e->e1 || f->member == e->e2 || f->member == e->e3 ||
                                             f->member == e->e4 || f->member == e->e5);
-    if (!curvature) out.push_back({Role::plain, f->member, f->bound});
+    if (!curvature) out.push_back({Role::plain, f->member, f->bound, 0.5 * friction, 1.25 * friction});
   }
   if (e == nullptr || !has(e->e1)) return out;
   if (has(e->e4)) {
@@ -165,7 +178,7 @@ Eigen::VectorXd initial_parameters(FitGroup group, const std::vector<Parameter>&
         case Role::plain: break;
       }
     }
-    u[static_cast<Eigen::Index>(i)] = to_parameter(p.bound, value);
+    u[static_cast<Eigen::Index>(i)] = to_parameter(p, value);
   }
   return u;
 }
@@ -176,7 +189,7 @@ void apply_parameters(FitGroup group, const std::vector<Parameter>& parameters, 
   bool split = false, single = false, load = false, load_squared = false, camber = false;
   for (std::size_t i = 0; i < parameters.size(); ++i) {
     const Parameter& p = parameters[i];
-    const double value = from_parameter(p.bound, u[static_cast<Eigen::Index>(i)]);
+    const double value = from_parameter(p, u[static_cast<Eigen::Index>(i)]);
     switch (p.role) {
       case Role::plain: c.*(p.member) = value; break;
       case Role::e_plus: e_plus = value, split = true; break;
@@ -240,7 +253,7 @@ bool converged_status(Eigen::LevenbergMarquardtSpace::Status status) {
 // noise-free data the residual is zero there). Column scaling (Eigen's mode 1) from the Jacobian's norms.
 int run_levenberg_marquardt(FitGroup group, const GroupPoints& data, const std::vector<const FittedCoefficient*>& unknowns,
                             M& c, bool& converged) {
-  ResidualFunctor functor{group, &data, parameters_for(group, unknowns), c};
+  ResidualFunctor functor{group, &data, parameters_for(group, data, unknowns), c};
   Eigen::VectorXd u = initial_parameters(group, functor.parameters, c);
   using Numerical = Eigen::NumericalDiff<ResidualFunctor, Eigen::Central>;
   Numerical numerical(functor, 3.7e-11);

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "tirefem/magic_formula/evaluator.hpp"
+
 namespace tirefem {
 namespace {
 constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
@@ -27,6 +29,43 @@ std::vector<PlotSeries> per_load(const TyreTestResult& t, TyreTestRow::Kind kind
     if (!s.x.empty()) series.push_back(std::move(s));
   }
   return series;
+}
+// The fit's pure-slip curve of one channel at each load's Fz over [from, to] of the swept variable.
+enum class Channel { fx, fy, mz };
+std::vector<PlotSeries> fitted_curves(const TyreTestResult& t, const TyreTestFit* fit, Channel channel, double from,
+                                      double to) {
+  std::vector<PlotSeries> series;
+  if (!fit || !(to > from)) return series;
+  for (const TyreTestLoad& l : t.loads) {
+    if (!(l.Fz_N > 0)) continue;
+    PlotSeries s{fmt::format("Magic Formula, Fz {:.0f} N", l.target_load_N), {}, {}, "lines"};
+    for (int i = 0; i <= 80; ++i) {
+      const double v = from + (to - from) * i / 80.0;
+      WheelSlipState w;
+      w.Fz = l.Fz_N;
+      if (channel == Channel::fx) w.kappa = v;
+      else w.alpha = v / kDegreesPerRadian;
+      const TyreForcesAndMoments f = evaluate_magic_formula(fit->tir.coefficients, w, SlipCombination::pure);
+      s.x.push_back(v);
+      s.y.push_back(channel == Channel::fx ? f.Fx : channel == Channel::fy ? f.Fy : f.Mz);
+    }
+    series.push_back(std::move(s));
+  }
+  return series;
+}
+
+// The range of the swept variable over the plot's FE points.
+std::pair<double, double> x_range(const std::vector<PlotSeries>& series) {
+  double lo = 1e300, hi = -1e300;
+  for (const PlotSeries& s : series)
+    for (double x : s.x) lo = std::min(lo, x), hi = std::max(hi, x);
+  return {lo, hi};
+}
+
+void add_fit(Plot& p, const TyreTestResult& t, const TyreTestFit* fit, Channel channel) {
+  for (PlotSeries& s : p.series) s.style = "points pt 7";
+  const auto [lo, hi] = x_range(p.series);
+  for (PlotSeries& s : fitted_curves(t, fit, channel, lo, hi)) p.series.push_back(std::move(s));
 }
 }  // namespace
 
@@ -68,28 +107,31 @@ CsvTable tyre_test_vertical_table(const TyreTestResult& t) {
   return table;
 }
 
-Plot tyre_test_fx_plot(const TyreTestResult& t) {
+Plot tyre_test_fx_plot(const TyreTestResult& t, const TyreTestFit* fit) {
   Plot p{fmt::format("{}: longitudinal force (W axes, Fz held)", t.name), "longitudinal slip κ [-]", "FX [N]", {}};
   p.series = per_load(t, TyreTestRow::Kind::slip_sweep, [](const TyreTestRow& r) { return r.kappa; },
                       [](const TyreTestRow& r) { return r.Fx_N; });
+  if (fit) add_fit(p, t, fit, Channel::fx);
   return p;
 }
 
-Plot tyre_test_fy_plot(const TyreTestResult& t) {
+Plot tyre_test_fy_plot(const TyreTestResult& t, const TyreTestFit* fit) {
   Plot p{fmt::format("{}: lateral force (W axes, Fz held)", t.name), "slip angle α [deg]", "FY [N]", {}};
   p.series = per_load(t, TyreTestRow::Kind::angle_sweep, [](const TyreTestRow& r) { return r.alpha_rad * kDegreesPerRadian; },
                       [](const TyreTestRow& r) { return r.Fy_N; });
+  if (fit) add_fit(p, t, fit, Channel::fy);
   return p;
 }
 
-Plot tyre_test_mz_plot(const TyreTestResult& t) {
+Plot tyre_test_mz_plot(const TyreTestResult& t, const TyreTestFit* fit) {
   Plot p{fmt::format("{}: aligning moment (W axes, Fz held)", t.name), "slip angle α [deg]", "MZ [N·m]", {}};
   p.series = per_load(t, TyreTestRow::Kind::angle_sweep, [](const TyreTestRow& r) { return r.alpha_rad * kDegreesPerRadian; },
                       [](const TyreTestRow& r) { return r.Mz_Nm; });
+  if (fit) add_fit(p, t, fit, Channel::mz);
   return p;
 }
 
-Plot tyre_test_vertical_plot(const TyreTestResult& t) {
+Plot tyre_test_vertical_plot(const TyreTestResult& t, const TyreTestFit* fit) {
   Plot p{fmt::format("{}: vertical characteristic on a plane", t.name), "deflection δz [mm]", "Fz [N]", {}};
   PlotSeries curve{"load-deflection curve", {}, {}, "linespoints pt 7"};
   if (t.vertical)
@@ -97,11 +139,24 @@ Plot tyre_test_vertical_plot(const TyreTestResult& t) {
   PlotSeries rig{"footprints of the test loads", {}, {}, "points pt 6 ps 2"};
   for (const TyreTestLoad& l : t.loads)
     if (l.Fz_N > 0) rig.x.push_back(l.deflection_mm), rig.y.push_back(l.Fz_N);
+  if (fit && !curve.x.empty()) {
+    // Fz = FNOMIN (Q_FZ1 ρ/R0 + Q_FZ2 (ρ/R0)²), the fitted vertical characteristic.
+    const MagicFormulaCoefficients& c = fit->tir.coefficients;
+    PlotSeries mf{"Magic Formula (Q_FZ1, Q_FZ2)", {}, {}, "lines"};
+    const double top = *std::max_element(curve.x.begin(), curve.x.end());
+    for (int i = 0; i <= 40; ++i) {
+      const double d = top * i / 40.0, rho = d * 1e-3 / c.UNLOADED_RADIUS;
+      mf.x.push_back(d);
+      mf.y.push_back(c.FNOMIN * (c.Q_FZ1 * rho + c.Q_FZ2 * rho * rho));
+    }
+    p.series = {std::move(curve), std::move(rig), std::move(mf)};
+    return p;
+  }
   p.series = {std::move(curve), std::move(rig)};
   return p;
 }
 
-toml::table tyre_test_summary(const TyreTestResult& t) {
+toml::table tyre_test_summary(const TyreTestResult& t, const TyreTestFit* fit) {
   toml::array loads;
   for (const TyreTestLoad& l : t.loads) {
     toml::table e{{"target_load_N", l.target_load_N}, {"completed", l.completed}};
@@ -129,7 +184,45 @@ toml::table tyre_test_summary(const TyreTestResult& t) {
     for (const std::string& m : t.failures) f.push_back(m);
     s.insert("failures", std::move(f));
   }
+  if (fit) {
+    const MagicFormulaCoefficients& c = fit->tir.coefficients;
+    toml::array errors, undetermined;
+    for (const ChannelFitError& e : fit->errors)
+      errors.push_back(toml::table{{"channel", e.channel}, {"points", e.points}, {"rms", e.rms}, {"peak", e.peak},
+                                   {"relative_rms", e.relative_rms}});
+    for (const std::string& k : fit->not_determined) undetermined.push_back(k);
+    toml::table coefficients;
+    for (const auto& [key, value] :
+         {std::pair{"FNOMIN", c.FNOMIN}, {"UNLOADED_RADIUS", c.UNLOADED_RADIUS}, {"VERTICAL_STIFFNESS", c.VERTICAL_STIFFNESS},
+          {"Q_FZ1", c.Q_FZ1}, {"Q_FZ2", c.Q_FZ2}, {"BREFF", c.BREFF}, {"DREFF", c.DREFF}, {"FREFF", c.FREFF},
+          {"PCX1", c.PCX1}, {"PDX1", c.PDX1}, {"PDX2", c.PDX2}, {"PEX1", c.PEX1}, {"PKX1", c.PKX1}, {"PKX2", c.PKX2},
+          {"PKX3", c.PKX3}, {"PCY1", c.PCY1}, {"PDY1", c.PDY1}, {"PDY2", c.PDY2}, {"PEY1", c.PEY1}, {"PKY1", c.PKY1},
+          {"PKY2", c.PKY2}, {"QBZ1", c.QBZ1}, {"QCZ1", c.QCZ1}, {"QDZ1", c.QDZ1}, {"QSX1", c.QSX1}})
+      coefficients.insert(key, value);
+    s.insert("magic_formula", toml::table{{"tir_file", t.name + "/" + t.name + ".tir"},
+                                          {"fit_time_s", fit->seconds},
+                                          {"fit_errors", std::move(errors)},
+                                          {"not_determined", std::move(undetermined)},
+                                          {"coefficients", std::move(coefficients)}});
+  }
   return s;
+}
+
+std::string tyre_test_fit_line(const TyreTestResult& t, const TyreTestFit& fit) {
+  std::string errors;
+  for (const ChannelFitError& e : fit.errors)
+    if (e.channel == "Fx" || e.channel == "Fy" || e.channel == "Mz")
+      errors += fmt::format("{}{} {:.1f}%", errors.empty() ? "" : ", ", e.channel, 100 * e.relative_rms);
+  const MagicFormulaCoefficients& c = fit.tir.coefficients;
+  // Public PAC2002 files of passenger tyres, for plausibility (Chrono's example data): 185/80R14 at FNOMIN
+  // 3800 N and a 245-section sedan tyre at 4850 N.
+  return fmt::format(
+      "tyre test '{}': Magic Formula fitted in {:.2f} s, RMS error of peak {}; VERTICAL_STIFFNESS {:.0f} N/mm, "
+      "PKX1 {:.1f}, PKY1 {:.1f}, PDX1 {:.2f}, PDY1 {:.2f}, Re(FNOMIN) {:.1f} mm of R0 {:.1f} mm (public files: "
+      "185/80R14 175 N/mm, PKX1 19.7, PKY1 -12.5, PDX1 1.09, PDY1 0.94; 245-section sedan 281 N/mm, PKX1 22.3, "
+      "PKY1 -21.9, PDX1 1.17, PDY1 1.05)",
+      t.name, fit.seconds, errors, c.VERTICAL_STIFFNESS * 1e-3, c.PKX1, c.PKY1, c.PDX1, c.PDY1,
+      effective_rolling_radius(c, c.FNOMIN) * 1e3, c.UNLOADED_RADIUS * 1e3);
 }
 
 }  // namespace tirefem

@@ -4,6 +4,7 @@
 #include <toml++/toml.h>
 
 #include "tirefem/analysis/tyre_test.hpp"
+#include "tirefem/analysis/tyre_test_fit.hpp"
 #include "tirefem/io/csv_writer.hpp"
 #include "tirefem/io/plot_writer.hpp"
 
@@ -17,12 +18,16 @@ CsvTable tyre_test_table(const TyreTestResult& result);
 // for the full tyre.
 CsvTable tyre_test_vertical_table(const TyreTestResult& result);
 
-// FX(κ), FY(α), MZ(α) at every load, and the vertical characteristic with the radii against the load.
-Plot tyre_test_fx_plot(const TyreTestResult& result);
-Plot tyre_test_fy_plot(const TyreTestResult& result);
-Plot tyre_test_mz_plot(const TyreTestResult& result);
-Plot tyre_test_vertical_plot(const TyreTestResult& result);
+// FX(κ), FY(α), MZ(α) at every load (FE points; with `fit`, the Magic Formula's pure-slip curves at each
+// load's Fz), and the vertical characteristic.
+Plot tyre_test_fx_plot(const TyreTestResult& result, const TyreTestFit* fit = nullptr);
+Plot tyre_test_fy_plot(const TyreTestResult& result, const TyreTestFit* fit = nullptr);
+Plot tyre_test_mz_plot(const TyreTestResult& result, const TyreTestFit* fit = nullptr);
+Plot tyre_test_vertical_plot(const TyreTestResult& result, const TyreTestFit* fit = nullptr);
 
-toml::table tyre_test_summary(const TyreTestResult& result);
+toml::table tyre_test_summary(const TyreTestResult& result, const TyreTestFit* fit = nullptr);
+// One line for the progress output: the fit's errors and the FNOMIN-normalised figures beside those of
+// public passenger-tyre files.
+std::string tyre_test_fit_line(const TyreTestResult& result, const TyreTestFit& fit);
 
 }  // namespace tirefem

@@ -1,0 +1,69 @@
+#include "tirefem/analysis/tyre_test_fit.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace tirefem {
+
+RigData tyre_test_rig_data(const TyreTestResult& t) {
+  RigData d;
+  d.FNOMIN = t.nominal_load_N;
+  d.UNLOADED_RADIUS = t.unloaded_radius_mm * 1e-3;
+  for (const TyreTestRow& r : t.rows)
+    d.points.push_back({r.Fz_N, r.kappa, r.alpha_rad, r.gamma_rad, r.Fx_N, r.Fy_N, r.Mz_Nm, r.Mx_Nm});
+  for (const TyreTestLoad& l : t.loads)
+    if (l.effective_rolling_radius_mm && l.Fz_N > 0)
+      d.radii.push_back({l.Fz_N, *l.effective_rolling_radius_mm * 1e-3, l.loaded_radius_mm * 1e-3});
+  if (t.vertical)
+    for (const LoadPoint& p : t.vertical->points)
+      if (p.patch.Qz_N > 0 && p.deflection_mm > 0) d.load_deflection.push_back({p.deflection_mm * 1e-3, p.patch.Qz_N});
+  return d;
+}
+
+TyreTestFit fit_tyre_test(const TyreTestResult& t, const TyreDescription& tyre, const std::string& source) {
+  const RigData data = tyre_test_rig_data(t);
+  const RigFit fit = fit_rig_data(data);
+  TyreTestFit out;
+  out.errors = fit.errors;
+  out.not_determined = fit.not_determined;
+  out.seconds = fit.seconds;
+  TirFile& f = out.tir;
+  f.coefficients = fit.coefficients;
+  MagicFormulaCoefficients& c = f.coefficients;
+  // Dimensions from the carcass line (the faces and the tread add a few mm outside it).
+  double width = 0, lowest = 1e300;
+  for (const Eigen::Vector2d& p : tyre.profile) width = std::max(width, 2 * p.x()), lowest = std::min(lowest, p.y());
+  c.UNLOADED_RADIUS = data.UNLOADED_RADIUS;
+  c.WIDTH = width * 1e-3;
+  c.RIM_RADIUS = tyre.profile.back().y() * 1e-3;
+  c.RIM_WIDTH = 2 * tyre.profile.back().x() * 1e-3;
+  c.ASPECT_RATIO = width > 0 ? (t.unloaded_radius_mm - tyre.profile.back().y()) / width : 0.0;
+  c.FNOMIN = t.nominal_load_N;
+  // The ranges the rig covered.
+  double fz_min = 1e300, fz_max = 0, k_min = 0, k_max = 0, a_min = 0, a_max = 0, g_min = 0, g_max = 0;
+  for (const RigPoint& p : data.points) {
+    fz_min = std::min(fz_min, p.FZ), fz_max = std::max(fz_max, p.FZ);
+    k_min = std::min(k_min, p.KAPPA), k_max = std::max(k_max, p.KAPPA);
+    a_min = std::min(a_min, p.ALPHA), a_max = std::max(a_max, p.ALPHA);
+    g_min = std::min(g_min, p.GAMMA), g_max = std::max(g_max, p.GAMMA);
+  }
+  if (!data.points.empty()) {
+    c.FZMIN = fz_min, c.FZMAX = fz_max;
+    c.KPUMIN = k_min, c.KPUMAX = k_max;
+    c.ALPMIN = a_min, c.ALPMAX = a_max;
+    c.CAMMIN = g_min, c.CAMMAX = g_max;
+  }
+  f.header_comments = {
+      fmt::format("tirefem virtual flat-track test '{}' of {} ({})", t.name, tyre.name, source),
+      "steady-state PAC2002 coefficients fitted to finite-element rolling states (no dynamics, no speed effects)",
+      "coefficients marked 'not determined' hold their neutral values: the test did not excite them"};
+  for (const std::string& key : fit.not_determined) f.notes[key] = "not determined by the test: neutral value";
+  f.notes["WIDTH"] = "twice the carcass line's largest x";
+  f.notes["RIM_RADIUS"] = "bead point of the carcass line";
+  f.notes["RIM_WIDTH"] = "twice the bead point's x";
+  return out;
+}
+
+}  // namespace tirefem
