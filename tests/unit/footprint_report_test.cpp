@@ -86,7 +86,7 @@ StaticContactResult curve(SupportDescription::Kind kind, Kinematics kinematics) 
 }
 
 const Case& example() {
-  static const Case c = read_case(std::filesystem::path(TIREFEM_SOURCE_DIR) / "examples/175-70R13.toml");
+  static const Case c = read_case(std::filesystem::path(TIREFEM_SOURCE_DIR) / "tests/data/example_175-70R13_before_revision.toml");
   return c;
 }
 

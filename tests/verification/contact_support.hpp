@@ -25,9 +25,11 @@
 
 namespace tirefem::verification {
 
-// The example case (175/70R13, 0.2 MPa), read once.
+// The example case (175/70R13, 0.2 MPa) as the tests' figures were measured with it, before the example's
+// data were revised (tests/data/), read once.
 inline const Case& example_case() {
-  static const Case c = read_case(std::filesystem::path(TIREFEM_SOURCE_DIR) / "examples/175-70R13.toml");
+  static const Case c =
+      read_case(std::filesystem::path(TIREFEM_SOURCE_DIR) / "tests/data/example_175-70R13_before_revision.toml");
   return c;
 }
 

@@ -1,5 +1,6 @@
 // The example's plane load curve against the values the solver gave before the speed work of issue 9
-// (tests/verification/data/load_curve_175-70R13_Qz.csv, commit a39d379): 120 × 46 half model, 0–40 mm in 20
+// (tests/verification/data/load_curve_175-70R13_Qz.csv, commit a39d379), on the example tyre as it was then
+// (tests/data/example_175-70R13_before_revision.toml): 120 × 46 half model, 0–40 mm in 20
 // points, single loop, stable equilibrium, reused factorisations — the case file's own settings. Every
 // solver change (GMRES, predictors, factorisation reuse, thread settings) must keep each Qz to 1e-6
 // relative: the Newton tolerance (1e-8 of the inflation load) moves Qz by far less, so a larger change
@@ -36,7 +37,7 @@ TEST(ExampleLoadCurve, QzEqualsTheRecordedSolverToOnePartPerMillion) {
   const auto recorded = recorded_values();
   ASSERT_EQ(recorded.size(), 21u);
   const Stopwatch clock;
-  const Case c = read_case(std::string(TIREFEM_SOURCE_DIR) + "/examples/175-70R13.toml");
+  const Case c = read_case(std::string(TIREFEM_SOURCE_DIR) + "/tests/data/example_175-70R13_before_revision.toml");
   const TyreMesh tm = build_tyre_mesh(c.tyre, c.mesh);
   const StaticContactResult r = run_load_curve(tm, c.tyre, c.inflation, c.contact, c.load_curves.front());
   ASSERT_TRUE(r.completed) << r.failure;
