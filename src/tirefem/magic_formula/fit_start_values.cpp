@@ -115,7 +115,8 @@ void set_start_values(FitGroup group, const GroupPoints& data, MagicFormulaCoeff
     c.PCY1 = shape_factor(levels, 1.3);
     c.PDY1 = std::max(mu0, 0.1) / c.LMUY;   // (4.E23)
     c.PDY2 = mu1 / c.LMUY;
-    c.PKY2 = levels.size() >= 2 ? cornering_stiffness_peak_load(levels.front(), levels.back(), Fz0) : 1.5;
+    // Within the fit's bound for PKY2 (fitter.cpp: Bound::peak_load).
+    c.PKY2 = levels.size() >= 2 ? std::clamp(cornering_stiffness_peak_load(levels.front(), levels.back(), Fz0), 0.5, 4.0) : 1.5;
     double sum = 0;  // PKY1 from each load's stiffness with that PKY2 (4.E25)
     for (const auto& l : levels) sum += l.slope / (Fz0 * sin_2_atan(l.Fz / (c.PKY2 * Fz0)) * c.LKY);
     c.PKY1 = levels.empty() ? -10.0 : sum / static_cast<double>(levels.size());

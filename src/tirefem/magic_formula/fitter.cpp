@@ -24,7 +24,10 @@ using Member = double M::*;
 // friction: a peak friction coefficient D/Fz (PDX1, PDY1) within [0.5, 1.25] × the largest |F|/Fz of the
 // data. Without it, data that approach their friction limit without a peak (a Coulomb tread: F → μ Fz as the
 // slip grows) are fitted as well by a far larger D with a small C, which extrapolates badly.
-enum class Bound { free, positive, at_most_one, friction };
+// peak_load: PKY2, the load (× FNOMIN) at which the cornering stiffness peaks, within [0.5, 4]. Loads well
+// below the peak determine only PKY1/PKY2 (Kyα ≈ 2 PKY1 Fz/PKY2, linear in Fz), not each; public files
+// have 1.4–2.
+enum class Bound { free, positive, at_most_one, friction, peak_load };
 
 // What a coefficient needs from the data to be determined.
 struct FittedCoefficient {
@@ -55,7 +58,7 @@ const std::vector<FittedCoefficient>& group_coefficients(FitGroup group) {
       COEF(PDY2, F, 2), COEF(PDY3, F, 1, 2),
       COEF(PEY1, Bound::at_most_one, 1, 1, false, true), COEF(PEY2, F, 2), COEF(PEY3, F, 1, 1, true),
       COEF(PEY4, F, 1, 2, true),
-      COEF(PKY1, F, 1, 1, false, true), COEF(PKY2, Bound::positive, 2), COEF(PKY3, F, 1, 2),
+      COEF(PKY1, F, 1, 1, false, true), COEF(PKY2, Bound::peak_load, 2), COEF(PKY3, F, 1, 2),
       COEF(PHY1, F, 1), COEF(PHY2, F, 2), COEF(PHY3, F, 1, 2),
       COEF(PVY1, F, 1), COEF(PVY2, F, 2), COEF(PVY3, F, 1, 2), COEF(PVY4, F, 2, 2)};
   static const std::vector<FittedCoefficient> aligning{
@@ -110,7 +113,8 @@ double to_parameter(const Parameter& p, double value) {
   switch (p.bound) {
     case Bound::positive: return std::log(std::max(value, 1e-6));
     case Bound::at_most_one: return std::log(std::max(1.0 - value, 1e-6));
-    case Bound::friction: {
+    case Bound::friction:
+    case Bound::peak_load: {
       const double t = std::clamp((value - p.lower) / (p.upper - p.lower), 1e-6, 1 - 1e-6);
       return std::log(t / (1 - t));
     }
@@ -123,7 +127,8 @@ double from_parameter(const Parameter& p, double u) {
   switch (p.bound) {
     case Bound::positive: return std::exp(u);
     case Bound::at_most_one: return 1.0 - std::exp(u);
-    case Bound::friction: return p.lower + (p.upper - p.lower) / (1 + std::exp(-u));
+    case Bound::friction:
+    case Bound::peak_load: return p.lower + (p.upper - p.lower) / (1 + std::exp(-u));
     case Bound::free: return u;
   }
   return u;
@@ -143,7 +148,9 @@ std::vector<Parameter> parameters_for(FitGroup group, const GroupPoints& data,
   for (const FittedCoefficient* f : unknowns) {
     const bool curvature = e != nullptr && (f->member == e->e1 || f->member == e->e2 || f->member == e->e3 ||
                                             f->member == e->e4 || f->member == e->e5);
-    if (!curvature) out.push_back({Role::plain, f->member, f->bound, 0.5 * friction, 1.25 * friction});
+    if (curvature) continue;
+    if (f->bound == Bound::peak_load) out.push_back({Role::plain, f->member, f->bound, 0.5, 4.0});
+    else out.push_back({Role::plain, f->member, f->bound, 0.5 * friction, 1.25 * friction});
   }
   if (e == nullptr || !has(e->e1)) return out;
   if (has(e->e4)) {
