@@ -209,6 +209,16 @@ void cornering_stiffness(RollingModel& model, const RollingStudy& study, Rolling
 
 }  // namespace
 
+std::vector<double> sweep_values(double from, double to, int points, SweepSpacing spacing) {
+  std::vector<double> v;
+  for (int i = 0; i < points; ++i) {
+    const double t = points > 1 ? from + (to - from) * i / (points - 1) : from;
+    if (spacing == SweepSpacing::even || from * to > 0) v.push_back(t);
+    else v.push_back(t < 0 ? from * (t / from) * (t / from) : (to != 0 ? to * (t / to) * (t / to) : 0.0));
+  }
+  return v;
+}
+
 RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const InflationSettings& inflation,
                           const ContactSettings& contact, const RollingStudy& study, const ProgressSink& progress,
                           const InflationResult* inflated, const StaticContactResult* footprint,
@@ -341,16 +351,14 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
   }
   if (study.sweep) {
     const SlipSweep& sw = *study.sweep;
-    std::vector<double> slips;
-    for (int i = 0; i < sw.points; ++i) slips.push_back(sw.from + (sw.to - sw.from) * i / (sw.points - 1));
+    const std::vector<double> slips = sweep_values(sw.from, sw.to, sw.points, sw.spacing);
     const auto targets = outward(slips, [](double k) { return SweepTarget{k, 0.0, 0.0}; });
     ok = run_sweep(model, study, r, targets, sw.hold_load, r.sweep, "sweep", progress, point_done) && ok;
     std::sort(r.sweep.begin(), r.sweep.end(), [](const SweepPoint& a, const SweepPoint& b) { return a.slip < b.slip; });
   }
   if (study.angle_sweep) {
     const SlipAngleSweep& sw = *study.angle_sweep;
-    std::vector<double> angles;
-    for (int i = 0; i < sw.points; ++i) angles.push_back(sw.from + (sw.to - sw.from) * i / (sw.points - 1));
+    const std::vector<double> angles = sweep_values(sw.from, sw.to, sw.points, sw.spacing);
     const auto targets = outward(angles, [&](double a) { return SweepTarget{sw.slip, a, sw.camber_deg}; });
     ok = run_sweep(model, study, r, targets, sw.hold_load, r.angle_sweep, "α sweep", progress, point_done) && ok;
     std::sort(r.angle_sweep.begin(), r.angle_sweep.end(),

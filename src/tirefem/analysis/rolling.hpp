@@ -133,6 +133,10 @@ RollingResult run_rolling(const TyreMesh& tyre_mesh, const TyreDescription& tyre
                           const StaticContactResult* footprint = nullptr,
                           const std::function<void()>& point_done = {});
 
+// The `points` values of a sweep over [from, to] (SweepSpacing): evenly spaced, or each side of zero
+// quadratically denser towards it (v = end·(t/end)² for t evenly spaced; from < 0 < to keeps 0 if even).
+std::vector<double> sweep_values(double from, double to, int points, SweepSpacing spacing);
+
 // Solves the rolling problem at the forms' current settings from u (overwritten). Two-level: the contact
 // region and the friction plan are frozen together in each outer iteration; single loop: both follow
 // the iterate, with a two-level retry from the start when the single loop fails.

@@ -172,11 +172,17 @@ struct RollingStateSpec {
 // The longitudinal force–slip curve Qy(κ): `points` slips evenly from `from` to `to`, at the footprint's
 // deflection (the paper's fixed axle; Qz drifts a little with the slip) or, with hold_load, with the
 // deflection of each point adjusted so that Qz stays at the study's target load.
+// How sweep points are spread over [from, to]: evenly, or quadratically denser near zero (each side
+// from 0 to its end as (i/n)², so that small slips, which fix the slope at zero, are sampled finely).
+// (analysis/rolling.hpp: sweep_values.)
+enum class SweepSpacing { even, quadratic };
+
 struct SlipSweep {
   double from = -0.1;
   double to = 0.1;
   int points = 15;
   bool hold_load = false;
+  SweepSpacing spacing = SweepSpacing::even;
 };
 
 // The lateral force and aligning moment curves Fy(α), Mz(α): `points` slip angles (degrees) evenly from
@@ -189,6 +195,7 @@ struct SlipAngleSweep {
   double slip = 0.0;
   double camber_deg = 0.0;
   bool hold_load = false;
+  SweepSpacing spacing = SweepSpacing::even;
 };
 
 // Combined slip: every (κ, α) pair of the two lists, the load held as for SlipSweep.
@@ -232,8 +239,9 @@ struct TyreTestStudy {
   std::vector<double> load_factors{0.5, 1.0, 1.5};
   double load_tolerance = 1e-3;
   double friction = 0.7;
-  SlipSweep slip_sweep{-0.15, 0.15, 15, true};
-  SlipAngleSweep angle_sweep{-12.0, 12.0, 15, 0.0, 0.0, true};
+  // Quadratic spacing by default: the Magic Formula's slip stiffnesses come from the small slips.
+  SlipSweep slip_sweep{-0.15, 0.15, 15, true, SweepSpacing::quadratic};
+  SlipAngleSweep angle_sweep{-12.0, 12.0, 15, 0.0, 0.0, true, SweepSpacing::quadratic};
   std::vector<double> cambers_deg;         // free-rolling states at each load (camber thrust)
   double vertical_max_deflection = 40.0;   // mm, the load–deflection curve from the undeformed tyre
   int vertical_points = 10;

@@ -21,17 +21,21 @@ TyreTestStudy read_tyre_test(TomlFields& f, const toml::node& n, const std::stri
   f.opt_number(t, path, "friction", s.friction, " (Coulomb coefficient μ)");
   if (const toml::node* v = f.get(t, path, "slip_sweep")) {
     const std::string sp = join(path, "slip_sweep");
-    const toml::table& w = f.table(*v, sp, {"from", "to", "points"});
+    const toml::table& w = f.table(*v, sp, {"from", "to", "points", "spacing"});
     f.opt_number(w, sp, "from", s.slip_sweep.from, " (slip κ)");
     f.opt_number(w, sp, "to", s.slip_sweep.to, " (slip κ)");
     f.opt_integer(w, sp, "points", s.slip_sweep.points);
+    if (const toml::node* x = f.get(w, sp, "spacing"))
+      s.slip_sweep.spacing = static_cast<SweepSpacing>(f.choice(*x, join(sp, "spacing"), {"even", "quadratic"}));
   }
   if (const toml::node* v = f.get(t, path, "angle_sweep")) {
     const std::string sp = join(path, "angle_sweep");
-    const toml::table& w = f.table(*v, sp, {"from", "to", "points"});
+    const toml::table& w = f.table(*v, sp, {"from", "to", "points", "spacing"});
     f.opt_number(w, sp, "from", s.angle_sweep.from, " (slip angle, degrees)");
     f.opt_number(w, sp, "to", s.angle_sweep.to, " (slip angle, degrees)");
     f.opt_integer(w, sp, "points", s.angle_sweep.points);
+    if (const toml::node* x = f.get(w, sp, "spacing"))
+      s.angle_sweep.spacing = static_cast<SweepSpacing>(f.choice(*x, join(sp, "spacing"), {"even", "quadratic"}));
   }
   if (const toml::node* v = f.get(t, path, "cambers")) s.cambers_deg = f.numbers(*v, join(path, "cambers"), " (degrees)");
   if (const toml::node* v = f.get(t, path, "vertical")) {

@@ -5,8 +5,10 @@
 //   loads                the test loads as multiples of nominal_load (default [0.5, 1, 1.5])
 //   load_tolerance       as for [[footprint]] (default 1e-3): every point is held at its load
 //   friction             Coulomb coefficient μ (default 0.7)
-//   slip_sweep           { from = -0.15, to = 0.15, points = 15 }: longitudinal slips κ, Qz held
-//   angle_sweep          { from = -12, to = 12, points = 15 }: slip angles, degrees, Qz held, κ = 0
+//   slip_sweep           { from = -0.15, to = 0.15, points = 15, spacing = "quadratic" }: longitudinal slips
+//                        κ, Qz held; spacing "quadratic" (denser near 0, the default) or "even"
+//   angle_sweep          { from = -12, to = 12, points = 15, spacing = "quadratic" }: slip angles, degrees,
+//                        Qz held, κ = 0
 //   cambers              [γ, ...] degrees: a free-rolling state at each, at every load (default none)
 //   vertical             { max_deflection = 40, points = 10 }: the load–deflection curve (half model)
 //   mesh                 optional own mesh, keys of [mesh]; it must be the full model

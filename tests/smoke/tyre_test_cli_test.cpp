@@ -1,0 +1,113 @@
+// The virtual rig end to end (issue 12): tests/smoke/tyre_test_case.toml runs a small [[tyre_test]] (2 loads,
+// 7 slips, 7 slip angles, a vertical curve) on a coarse full mesh; the run must write the measurement table
+// in SI units and W-axis signs, the plots, and a PAC2002 .tir that reads back, whose fit passes through the
+// FE points (RMS below 3% of the peak for Fx and Fy, 10% for Mz: issue 12's criteria), with the signs of
+// the W axes (braking Fx < 0, α > 0 gives Fy < 0 and PKY1 < 0).
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "tirefem/magic_formula/tir_reader.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path rig_scratch() {
+  const fs::path p = fs::temp_directory_path() / ("tirefem_rig_smoke_" + std::to_string(::getpid()));
+  fs::create_directories(p);
+  return p / "out";
+}
+
+// The CSV's data rows by column name (comment lines skipped).
+std::vector<std::map<std::string, double>> read_table(const fs::path& file) {
+  std::ifstream in(file);
+  std::string line;
+  std::vector<std::string> columns;
+  std::vector<std::map<std::string, double>> rows;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::stringstream ss(line);
+    std::string cell;
+    if (columns.empty()) {
+      while (std::getline(ss, cell, ',')) columns.push_back(cell);
+      continue;
+    }
+    std::map<std::string, double> row;
+    for (std::size_t k = 0; std::getline(ss, cell, ','); ++k) row[columns.at(k)] = std::stod(cell);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// "relative_rms" of the channel in summary.json's fit errors (the JSON is written one key per line).
+double fit_error(const std::string& summary, const std::string& channel) {
+  const auto at = summary.find("\"channel\" : \"" + channel + "\"");
+  if (at == std::string::npos) return -1;
+  const auto start = summary.rfind('{', at), end = summary.find('}', at);
+  const std::string entry = summary.substr(start, end - start);
+  const auto key = entry.find("\"relative_rms\" : ");
+  return key == std::string::npos ? -1 : std::stod(entry.substr(key + 17));
+}
+
+TEST(CliTyreTest, RigWritesTheTableAndAFittedTirFile) {
+  const fs::path out = rig_scratch();
+  const std::string command = std::string(TIREFEM_CLI) + " run " + TIREFEM_SOURCE_DIR +
+                              "/tests/smoke/tyre_test_case.toml --quiet --out " + out.string() + " > " +
+                              (out.parent_path() / "log").string() + " 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  for (const char* f : {"rig/tyre_test.csv", "rig/vertical.csv", "rig/rig.tir", "plots/rig_fx_kappa.gp",
+                        "plots/rig_fy_alpha.gp", "plots/rig_mz_alpha.gp", "plots/rig_vertical.gp"})
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+  const auto rows = read_table(out / "rig/tyre_test.csv");
+  ASSERT_EQ(rows.size(), 2u * (1 + 7 + 7));
+  int braking = 0, positive_alpha = 0;
+  for (const auto& r : rows) {
+    EXPECT_NEAR(r.at("FZ"), r.at("TARGET_FZ"), 2e-3 * r.at("TARGET_FZ"));  // SI: N; held at the load
+    if (r.at("KAPPA") < -1e-9 && r.at("ALPHA") == 0) {
+      ++braking;
+      EXPECT_LT(r.at("FX"), 0) << "braking gives Fx < 0";
+    }
+    if (r.at("ALPHA") > 1e-9) {
+      ++positive_alpha;
+      EXPECT_LT(r.at("FY"), 0) << "α > 0 gives Fy < 0 in the W axes";
+      EXPECT_GT(r.at("MZ"), 0) << "and an aligning moment Mz > 0";
+      EXPECT_LT(r.at("ALPHA"), 0.2) << "in radians";
+      EXPECT_LT(std::abs(r.at("MZ")), 100.0) << "in N·m";
+    }
+    EXPECT_GT(r.at("RL"), 0.25);  // m
+    EXPECT_LT(r.at("RL"), 0.29);
+  }
+  EXPECT_EQ(braking, 2 * 3);
+  EXPECT_EQ(positive_alpha, 2 * 3);
+  const tirefem::TirFile tir = tirefem::read_tir_file(out / "rig/rig.tir");
+  const tirefem::MagicFormulaCoefficients& c = tir.coefficients;
+  EXPECT_EQ(c.FNOMIN, 2000.0);
+  EXPECT_NEAR(c.UNLOADED_RADIUS, 0.285, 1e-9);
+  EXPECT_LT(c.PKY1, 0);
+  EXPECT_GT(c.PKX1, 0);
+  EXPECT_GT(c.VERTICAL_STIFFNESS, 1e5);  // N/m
+  EXPECT_LT(c.VERTICAL_STIFFNESS, 3e5);
+  std::ifstream in(out / "summary.json");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string summary = ss.str();
+  EXPECT_NE(summary.find("\"tir_file\" : \"rig/rig.tir\""), std::string::npos);
+  const double fx = fit_error(summary, "Fx"), fy = fit_error(summary, "Fy"), mz = fit_error(summary, "Mz");
+  std::printf("  fit RMS of peak: Fx %.4f, Fy %.4f, Mz %.4f; PKX1 %.2f, PKY1 %.2f\n", fx, fy, mz, c.PKX1, c.PKY1);
+  EXPECT_GE(fx, 0);
+  EXPECT_LT(fx, 0.03);
+  EXPECT_GE(fy, 0);
+  EXPECT_LT(fy, 0.03);
+  EXPECT_GE(mz, 0);
+  EXPECT_LT(mz, 0.10);
+  fs::remove_all(out.parent_path());
+}
+
+}  // namespace
