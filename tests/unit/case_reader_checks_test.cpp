@@ -251,7 +251,7 @@ TEST(CaseReaderChecks, PlausibilityBounds) {
        "tyre.interlayer.thickness.value[3]: must be in [0.01, 100] mm"},
       {"value = [10.0, 10.0, 8.0, 8.0]", "value = [10.0, 101, 8.0, 8.0]", "tyre.tread.height.value[1]: must be in [0, 100] mm"},
       {"stiffness = 1.0", "stiffness = 1e9", "tyre.tread.stiffness: must be in [0.001, 100] N/mm³"},
-      {"shear_modulus = 0.9", "shear_modulus = 1e9", "tyre.tread.shear_modulus: must be in [0.001, 1e+06] MPa"},
+      {"shear_modulus = 0.55", "shear_modulus = 1e9", "tyre.tread.shear_modulus: must be in [0.001, 1e+06] MPa"},
       {"pressure = 0.2", "pressure = 2.5", "inflation.pressure: must be in [0, 2] MPa"},
       {"outer = { plies = [\"belt1\", \"belt2\"] }", "outer = { stiffness = [[2e8, 0, 0], [0, 1e3, 0], [0, 0, 1e3]] }",
        "tyre.zones[0].outer.stiffness[0][0]: must be ≤ 1e+08 N/mm"},
@@ -287,10 +287,10 @@ TEST(CaseReaderChecks, PlausibilityBounds) {
 
 TEST(CaseReaderChecks, TreadShearModulusOnlyForRolling) {
   const std::string text = tyre_with("");
-  const auto at = text.find("shear_modulus = 0.9\n");
+  const auto at = text.find("shear_modulus = 0.55\n");
   ASSERT_NE(at, std::string::npos);
   std::string without = text;
-  without.erase(at, std::string("shear_modulus = 0.9\n").size());
+  without.erase(at, std::string("shear_modulus = 0.55\n").size());
   const Case c = parse_case(without, "case.toml");
   EXPECT_EQ(c.tyre.tread_shear_modulus, 0.0);
   const std::string rolling = without + "[[rolling]]\nname = \"r\"\nsupport = { kind = \"plane\" }\nstates = [{ state = \"free\" }]\n";
@@ -301,6 +301,7 @@ TEST(CaseReaderChecks, TreadShearModulusOnlyForRolling) {
   // a case built in code: checked when a study rolls or when it is set
   Case built = read_case(kExample);
   built.rolling.clear();
+  built.tyre_tests.clear();
   built.tyre.tread_shear_modulus = 0.0;
   EXPECT_EQ(validation_error_of(built), "(no error)");
   RollingStudy r;
@@ -309,6 +310,7 @@ TEST(CaseReaderChecks, TreadShearModulusOnlyForRolling) {
   built.rolling = {r};
   EXPECT_CONTAINS(validation_error_of(built), "tyre.tread.shear_modulus: must be > 0 (got 0)");
   built.rolling.clear();
+  built.tyre_tests.clear();
   built.tyre.tread_shear_modulus = -1.0;
   EXPECT_CONTAINS(validation_error_of(built), "tyre.tread.shear_modulus: must be > 0 (got -1)");
 }

@@ -45,12 +45,13 @@ TEST(CaseReader, ReadsTheExample) {
   EXPECT_EQ(crown.outer.plies[1].angle_deg, -22.0);
   EXPECT_EQ(crown.outer.plies[1].cord_area, 0.196);
   EXPECT_FALSE(crown.outer.direct_stiffness.has_value());
-  EXPECT_EQ(crown.core_shear_modulus, 1.5);
+  EXPECT_EQ(crown.core_shear_modulus, 2.0);
   EXPECT_EQ(crown.core_normal_modulus, 100.0);
 
   ASSERT_TRUE(t.zones[1].outer.direct_stiffness.has_value());
   EXPECT_TRUE(t.zones[1].outer.plies.empty());
-  EXPECT_EQ(*t.zones[1].outer.direct_stiffness, isotropic_membrane(4.0, 0.49, 4.0));
+  EXPECT_EQ(*t.zones[1].outer.direct_stiffness, isotropic_membrane(4.0, 0.49, 8.0));
+  EXPECT_EQ(t.zones[1].core_shear_modulus, 1.5);
   EXPECT_EQ(*t.zones[3].outer.direct_stiffness, isotropic_membrane(8.0, 0.49, 4.0));
   EXPECT_EQ(t.zones[3].core_shear_modulus, 2.0);
 
@@ -60,7 +61,7 @@ TEST(CaseReader, ReadsTheExample) {
   EXPECT_DOUBLE_EQ(t.tread_height.at(62.5), 9.0);
   EXPECT_EQ(t.tread_end_s, 78.0);
   EXPECT_EQ(t.tread_stiffness, 1.0);
-  EXPECT_EQ(t.tread_shear_modulus, 0.9);
+  EXPECT_EQ(t.tread_shear_modulus, 0.55);
 
   EXPECT_EQ(c.mesh.circumferential_elements, 120);
   EXPECT_EQ(c.mesh.meridional_elements, 46);
@@ -192,14 +193,14 @@ TEST(CaseReader, OtherFaceForms) {
   replace_first("inner = { plies = [\"carcass\", \"carcass\"] }",
                 "inner = { plies = [\"carcass\", { cord_modulus = 3500, cord_area = 0.33, ends_per_mm = 1, "
                 "angle = 90, thickness = 1, rubber_modulus = 4 }], rule = \"gough_tangorra\" }");
-  replace_first("rubber = { E = 4.0, nu = 0.49, thickness = 4.0 }",
-                "rubber = [{ E = 4.0, thickness = 2.0 }, { E = 4.0, thickness = 2.0 }]");
+  replace_first("rubber = { E = 4.0, nu = 0.49, thickness = 8.0 }",
+                "rubber = [{ E = 4.0, thickness = 4.0 }, { E = 4.0, thickness = 4.0 }]");
   const Case c = parse_case(text, "case.toml");
   EXPECT_EQ((*c.tyre.zones[0].outer.direct_stiffness)(1, 1), 37000.0);
   EXPECT_EQ(c.tyre.zones[0].inner.rule, CordRubberRule::gough_tangorra);
   EXPECT_EQ(c.tyre.zones[0].inner.plies[1].cord_area, 0.33);
   EXPECT_EQ(c.tyre.zones[1].inner.rule, CordRubberRule::halpin_tsai);
-  EXPECT_LT((*c.tyre.zones[1].outer.direct_stiffness - isotropic_membrane(4.0, 0.49, 4.0)).norm(), 1e-12);
+  EXPECT_LT((*c.tyre.zones[1].outer.direct_stiffness - isotropic_membrane(4.0, 0.49, 8.0)).norm(), 1e-12);
 
   EXPECT_CONTAINS(
       error_of(edited("outer = { plies = [\"belt1\", \"belt2\"] }",
