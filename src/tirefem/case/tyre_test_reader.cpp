@@ -8,6 +8,19 @@
 
 namespace tirefem::case_reading {
 
+namespace {
+// { from, to, points, spacing } of a rig's sweep into its fields (absent keys keep their defaults).
+void read_sweep_range(TomlFields& f, const toml::node& n, const std::string& path, std::string_view unit,
+                      double& from, double& to, int& points, SweepSpacing& spacing) {
+  const toml::table& w = f.table(n, path, {"from", "to", "points", "spacing"});
+  f.opt_number(w, path, "from", from, unit);
+  f.opt_number(w, path, "to", to, unit);
+  f.opt_integer(w, path, "points", points);
+  if (const toml::node* x = f.get(w, path, "spacing"))
+    spacing = static_cast<SweepSpacing>(f.choice(*x, join(path, "spacing"), {"even", "quadratic"}));  // enum order
+}
+}  // namespace
+
 TyreTestStudy read_tyre_test(TomlFields& f, const toml::node& n, const std::string& path, const MeshSettings& case_mesh) {
   const toml::table& t = f.table(n, path, {"name", "nominal_load", "loads", "load_tolerance", "friction", "slip_sweep",
                                            "angle_sweep", "cambers", "vertical", "mesh"});
@@ -19,24 +32,12 @@ TyreTestStudy read_tyre_test(TomlFields& f, const toml::node& n, const std::stri
     s.load_factors = f.numbers(*v, join(path, "loads"), " (multiples of nominal_load)");
   f.opt_number(t, path, "load_tolerance", s.load_tolerance, " (relative)");
   f.opt_number(t, path, "friction", s.friction, " (Coulomb coefficient μ)");
-  if (const toml::node* v = f.get(t, path, "slip_sweep")) {
-    const std::string sp = join(path, "slip_sweep");
-    const toml::table& w = f.table(*v, sp, {"from", "to", "points", "spacing"});
-    f.opt_number(w, sp, "from", s.slip_sweep.from, " (slip κ)");
-    f.opt_number(w, sp, "to", s.slip_sweep.to, " (slip κ)");
-    f.opt_integer(w, sp, "points", s.slip_sweep.points);
-    if (const toml::node* x = f.get(w, sp, "spacing"))
-      s.slip_sweep.spacing = static_cast<SweepSpacing>(f.choice(*x, join(sp, "spacing"), {"even", "quadratic"}));
-  }
-  if (const toml::node* v = f.get(t, path, "angle_sweep")) {
-    const std::string sp = join(path, "angle_sweep");
-    const toml::table& w = f.table(*v, sp, {"from", "to", "points", "spacing"});
-    f.opt_number(w, sp, "from", s.angle_sweep.from, " (slip angle, degrees)");
-    f.opt_number(w, sp, "to", s.angle_sweep.to, " (slip angle, degrees)");
-    f.opt_integer(w, sp, "points", s.angle_sweep.points);
-    if (const toml::node* x = f.get(w, sp, "spacing"))
-      s.angle_sweep.spacing = static_cast<SweepSpacing>(f.choice(*x, join(sp, "spacing"), {"even", "quadratic"}));
-  }
+  if (const toml::node* v = f.get(t, path, "slip_sweep"))
+    read_sweep_range(f, *v, join(path, "slip_sweep"), " (slip κ)", s.slip_sweep.from, s.slip_sweep.to,
+                     s.slip_sweep.points, s.slip_sweep.spacing);
+  if (const toml::node* v = f.get(t, path, "angle_sweep"))
+    read_sweep_range(f, *v, join(path, "angle_sweep"), " (slip angle, degrees)", s.angle_sweep.from,
+                     s.angle_sweep.to, s.angle_sweep.points, s.angle_sweep.spacing);
   if (const toml::node* v = f.get(t, path, "cambers")) s.cambers_deg = f.numbers(*v, join(path, "cambers"), " (degrees)");
   if (const toml::node* v = f.get(t, path, "vertical")) {
     const std::string sp = join(path, "vertical");

@@ -18,12 +18,19 @@ const TyreTestLoad* load_of(const TyreTestResult& t, double target) {
   return nullptr;
 }
 
+// One colour per load, shared by its FE points and its fitted curve.
+std::string load_colour(std::size_t i) {
+  static constexpr const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
+  return fmt::format("lc rgb '{}'", colours[i % 6]);
+}
+
 // One curve per load of the rows of `kind`: x and y taken from the row.
 template <class X, class Y>
 std::vector<PlotSeries> per_load(const TyreTestResult& t, TyreTestRow::Kind kind, X x, Y y) {
   std::vector<PlotSeries> series;
-  for (const TyreTestLoad& l : t.loads) {
-    PlotSeries s{fmt::format("Fz {:.0f} N", l.target_load_N), {}, {}, "linespoints pt 7"};
+  for (std::size_t i = 0; i < t.loads.size(); ++i) {
+    const TyreTestLoad& l = t.loads[i];
+    PlotSeries s{fmt::format("Fz {:.0f} N", l.target_load_N), {}, {}, "linespoints pt 7 " + load_colour(i)};
     for (const TyreTestRow& r : t.rows)
       if (r.kind == kind && r.target_load_N == l.target_load_N) s.x.push_back(x(r)), s.y.push_back(y(r));
     if (!s.x.empty()) series.push_back(std::move(s));
@@ -36,9 +43,10 @@ std::vector<PlotSeries> fitted_curves(const TyreTestResult& t, const TyreTestFit
                                       double to) {
   std::vector<PlotSeries> series;
   if (!fit || !(to > from)) return series;
-  for (const TyreTestLoad& l : t.loads) {
+  for (std::size_t k = 0; k < t.loads.size(); ++k) {
+    const TyreTestLoad& l = t.loads[k];
     if (!(l.Fz_N > 0)) continue;
-    PlotSeries s{fmt::format("Magic Formula, Fz {:.0f} N", l.target_load_N), {}, {}, "lines"};
+    PlotSeries s{fmt::format("Magic Formula, Fz {:.0f} N", l.target_load_N), {}, {}, "lines " + load_colour(k)};
     for (int i = 0; i <= 80; ++i) {
       const double v = from + (to - from) * i / 80.0;
       WheelSlipState w;
@@ -63,7 +71,7 @@ std::pair<double, double> x_range(const std::vector<PlotSeries>& series) {
 }
 
 void add_fit(Plot& p, const TyreTestResult& t, const TyreTestFit* fit, Channel channel) {
-  for (PlotSeries& s : p.series) s.style = "points pt 7";
+  for (PlotSeries& s : p.series) s.style.replace(0, std::string("linespoints").size(), "points");
   const auto [lo, hi] = x_range(p.series);
   for (PlotSeries& s : fitted_curves(t, fit, channel, lo, hi)) p.series.push_back(std::move(s));
 }
@@ -107,29 +115,27 @@ CsvTable tyre_test_vertical_table(const TyreTestResult& t) {
   return table;
 }
 
-Plot tyre_test_fx_plot(const TyreTestResult& t, const TyreTestFit* fit) {
-  Plot p{fmt::format("{}: longitudinal force (W axes, Fz held)", t.name), "longitudinal slip κ [-]", "FX [N]", {}};
-  p.series = per_load(t, TyreTestRow::Kind::slip_sweep, [](const TyreTestRow& r) { return r.kappa; },
-                      [](const TyreTestRow& r) { return r.Fx_N; });
-  if (fit) add_fit(p, t, fit, Channel::fx);
+namespace {
+// FX(κ), FY(α) or MZ(α) of every load's sweep, with the fit's curves.
+Plot sweep_plot(const TyreTestResult& t, const TyreTestFit* fit, Channel channel) {
+  const bool longitudinal = channel == Channel::fx;
+  static constexpr const char* titles[] = {"longitudinal force", "lateral force", "aligning moment"};
+  static constexpr const char* labels[] = {"FX [N]", "FY [N]", "MZ [N·m]"};
+  const int c = static_cast<int>(channel);
+  Plot p{fmt::format("{}: {} (W axes, Fz held)", t.name, titles[c]),
+         longitudinal ? "longitudinal slip κ [-]" : "slip angle α [deg]", labels[c], {}};
+  p.series = per_load(
+      t, longitudinal ? TyreTestRow::Kind::slip_sweep : TyreTestRow::Kind::angle_sweep,
+      [longitudinal](const TyreTestRow& r) { return longitudinal ? r.kappa : r.alpha_rad * kDegreesPerRadian; },
+      [channel](const TyreTestRow& r) { return channel == Channel::fx ? r.Fx_N : channel == Channel::fy ? r.Fy_N : r.Mz_Nm; });
+  if (fit) add_fit(p, t, fit, channel);
   return p;
 }
+}  // namespace
 
-Plot tyre_test_fy_plot(const TyreTestResult& t, const TyreTestFit* fit) {
-  Plot p{fmt::format("{}: lateral force (W axes, Fz held)", t.name), "slip angle α [deg]", "FY [N]", {}};
-  p.series = per_load(t, TyreTestRow::Kind::angle_sweep, [](const TyreTestRow& r) { return r.alpha_rad * kDegreesPerRadian; },
-                      [](const TyreTestRow& r) { return r.Fy_N; });
-  if (fit) add_fit(p, t, fit, Channel::fy);
-  return p;
-}
-
-Plot tyre_test_mz_plot(const TyreTestResult& t, const TyreTestFit* fit) {
-  Plot p{fmt::format("{}: aligning moment (W axes, Fz held)", t.name), "slip angle α [deg]", "MZ [N·m]", {}};
-  p.series = per_load(t, TyreTestRow::Kind::angle_sweep, [](const TyreTestRow& r) { return r.alpha_rad * kDegreesPerRadian; },
-                      [](const TyreTestRow& r) { return r.Mz_Nm; });
-  if (fit) add_fit(p, t, fit, Channel::mz);
-  return p;
-}
+Plot tyre_test_fx_plot(const TyreTestResult& t, const TyreTestFit* fit) { return sweep_plot(t, fit, Channel::fx); }
+Plot tyre_test_fy_plot(const TyreTestResult& t, const TyreTestFit* fit) { return sweep_plot(t, fit, Channel::fy); }
+Plot tyre_test_mz_plot(const TyreTestResult& t, const TyreTestFit* fit) { return sweep_plot(t, fit, Channel::mz); }
 
 Plot tyre_test_vertical_plot(const TyreTestResult& t, const TyreTestFit* fit) {
   Plot p{fmt::format("{}: vertical characteristic on a plane", t.name), "deflection δz [mm]", "Fz [N]", {}};
