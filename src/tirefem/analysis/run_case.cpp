@@ -20,14 +20,12 @@
 #include "tirefem/analysis/shared_states.hpp"
 #include "tirefem/analysis/study_reports.hpp"
 #include "tirefem/analysis/tyre_test.hpp"
-#include "tirefem/analysis/tyre_test_fit.hpp"
 #include "tirefem/case/tyre_reader.hpp"
 #include "tirefem/io/json_summary.hpp"
 #include "tirefem/io/results_folder.hpp"
 #include "tirefem/results/footprint_report.hpp"
 #include "tirefem/results/inflation_report.hpp"
 #include "tirefem/results/rolling_report.hpp"
-#include "tirefem/results/tyre_test_report.hpp"
 #include "tirefem/solver/blas_kernel.hpp"
 
 namespace tirefem {
@@ -317,33 +315,38 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     }
     ++k;
   }
-  // The rig's loads first, the heaviest first (they take longest), then its vertical curve.
-  std::vector<RollingStudy> rig_studies;  // stable: the tasks refer to them
-  for (const TyreTestStudy& s : c.tyre_tests)
-    for (std::size_t i = 0; i < s.load_factors.size(); ++i) rig_studies.push_back(tyre_test_rolling_study(s, i));
-  std::vector<LoadCurveStudy> rig_curves;
-  for (const TyreTestStudy& s : c.tyre_tests) rig_curves.push_back(tyre_test_vertical_study(s));
-  std::vector<std::unique_ptr<TyreTestProgress>> rig_progress;
-  for (const TyreTestStudy& s : c.tyre_tests) rig_progress.push_back(std::make_unique<TyreTestProgress>(s));
-  std::size_t rig_study = 0;
-  for (std::size_t t = 0; t < c.tyre_tests.size(); ++t) {
-    const MeshSettings settings = c.tyre_tests[t].mesh.value_or(c.mesh);
-    const std::size_t first = rig_study;
-    for (std::size_t i = 0; i < c.tyre_tests[t].load_factors.size(); ++i, ++rig_study, ++k) {
-      const RollingStudy& s = rig_studies[rig_study];
-      chains.push_back({task(k, "tyre test '" + s.name + "'", [&, k, t, settings](const ProgressSink& sink) {
+  // A tyre test: a chain per load, the heaviest first (they take longest), then its vertical curve. The plans
+  // are complete before any task is made: the tasks refer to them.
+  struct RigPlan {
+    std::vector<RollingStudy> loads;
+    LoadCurveStudy vertical;
+    MeshSettings mesh;
+    std::unique_ptr<TyreTestProgress> progress;
+  };
+  std::vector<RigPlan> rigs;
+  for (const TyreTestStudy& s : c.tyre_tests) {
+    RigPlan& r = rigs.emplace_back();
+    for (std::size_t i = 0; i < s.load_factors.size(); ++i) r.loads.push_back(tyre_test_rolling_study(s, i));
+    r.vertical = tyre_test_vertical_study(s);
+    r.mesh = s.mesh.value_or(c.mesh);
+    r.progress = std::make_unique<TyreTestProgress>(s);
+  }
+  for (const RigPlan& rig : rigs) {
+    for (const RollingStudy& s : rig.loads) {
+      chains.push_back({task(k, "tyre test '" + s.name + "'", [&, k, r = &rig, s = &s](const ProgressSink& sink) {
         const auto point_done = [&] {
-          if (const std::string line = rig_progress[t]->point_done(); !line.empty()) sink(line);
+          if (const std::string line = r->progress->point_done(); !line.empty()) sink(line);
         };
-        runs[k].rolling = run_rolling(tyres.mesh(settings), c.tyre, c.inflation, c.contact, s, sink,
-                                      &tyres.inflated(settings), nullptr, point_done);
+        runs[k].rolling = run_rolling(tyres.mesh(r->mesh), c.tyre, c.inflation, c.contact, *s, sink,
+                                      &tyres.inflated(r->mesh), nullptr, point_done);
       })});
+      ++k;
     }
-    std::reverse(chains.end() - static_cast<std::ptrdiff_t>(rig_study - first), chains.end());
-    const MeshSettings half = tyre_test_vertical_mesh(settings);
-    chains.push_back({task(k, "tyre test '" + rig_curves[t].name + "'", [&, k, half, t](const ProgressSink& sink) {
-      runs[k].contact = run_load_curve(tyres.mesh(half), c.tyre, c.inflation, c.contact, rig_curves[t], sink,
-                                       &tyres.inflated(half));
+    std::reverse(chains.end() - static_cast<std::ptrdiff_t>(rig.loads.size()), chains.end());
+    chains.push_back({task(k, "tyre test '" + rig.vertical.name + "'", [&, k, r = &rig](const ProgressSink& sink) {
+      const MeshSettings half = tyre_test_vertical_mesh(r->mesh);
+      runs[k].contact =
+          run_load_curve(tyres.mesh(half), c.tyre, c.inflation, c.contact, r->vertical, sink, &tyres.inflated(half));
     })});
     ++k;
   }
@@ -445,14 +448,7 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
       report(progress, fmt::format("warning: tyre test '{}': {} (converged points kept)", s.name, m));
       incomplete.push_back(fmt::format("tyre test '{}': {}", s.name, m));
     }
-    // The Magic Formula of the converged points (a rig that stopped short is fitted on what it has).
-    std::optional<TyreTestFit> fit;
-    plots.attempt("tyre test '" + s.name + "': Magic Formula fit", [&] {
-      fit = fit_tyre_test(t, c.tyre, c.source.filename().string());
-      report(progress, tyre_test_fit_line(t, *fit));
-    });
-    plots.attempt("tyre test '" + s.name + "'", [&] { write_tyre_test(folder, plots, t, fit ? &*fit : nullptr); });
-    rig_summaries.push_back(tyre_test_summary(t, fit ? &*fit : nullptr));
+    rig_summaries.push_back(report_tyre_test(folder, plots, progress, c, t));
   }
   if (!c.tyre_tests.empty()) summary.insert("tyre_tests", std::move(rig_summaries));
   times.end();

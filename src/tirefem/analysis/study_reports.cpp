@@ -1,5 +1,7 @@
 #include "tirefem/analysis/study_reports.hpp"
 
+#include <optional>
+
 #include <fmt/format.h>
 
 #include "tirefem/io/csv_writer.hpp"
@@ -103,14 +105,25 @@ void write_rolling(const ResultsFolder& folder, ReportWriter& plots, const TyreM
   plots.plot(n + "_belt_tension", circumferential_belt_plot(table));
 }
 
-void write_tyre_test(const ResultsFolder& folder, ReportWriter& plots, const TyreTestResult& t, const TyreTestFit* fit) {
-  write_csv(folder.path(t.name + "/tyre_test.csv"), tyre_test_table(t));
-  if (t.vertical) write_csv(folder.path(t.name + "/vertical.csv"), tyre_test_vertical_table(t));
-  if (fit) write_tir_file(folder.path(t.name + "/" + t.name + ".tir"), fit->tir);
-  plots.plot(t.name + "_fx_kappa", tyre_test_fx_plot(t, fit));
-  plots.plot(t.name + "_fy_alpha", tyre_test_fy_plot(t, fit));
-  plots.plot(t.name + "_mz_alpha", tyre_test_mz_plot(t, fit));
-  plots.plot(t.name + "_vertical", tyre_test_vertical_plot(t, fit));
+toml::table report_tyre_test(const ResultsFolder& folder, ReportWriter& plots, const ProgressSink& progress,
+                             const Case& c, const TyreTestResult& t) {
+  // The Magic Formula of the converged points (a test that stopped short is fitted on what it has).
+  std::optional<TyreTestFit> fit;
+  plots.attempt("tyre test '" + t.name + "': Magic Formula fit", [&] {
+    fit = fit_tyre_test(t, c.tyre, c.source.filename().string());
+    if (progress) progress(tyre_test_fit_line(t, *fit));
+  });
+  const TyreTestFit* f = fit ? &*fit : nullptr;
+  plots.attempt("tyre test '" + t.name + "'", [&] {
+    write_csv(folder.path(t.name + "/tyre_test.csv"), tyre_test_table(t));
+    if (t.vertical) write_csv(folder.path(t.name + "/vertical.csv"), tyre_test_vertical_table(t));
+    if (f) write_tir_file(folder.path(t.name + "/" + t.name + ".tir"), f->tir);
+    plots.plot(t.name + "_fx_kappa", tyre_test_fx_plot(t, f));
+    plots.plot(t.name + "_fy_alpha", tyre_test_fy_plot(t, f));
+    plots.plot(t.name + "_mz_alpha", tyre_test_mz_plot(t, f));
+    plots.plot(t.name + "_vertical", tyre_test_vertical_plot(t, f));
+  });
+  return tyre_test_summary(t, f);
 }
 
 }  // namespace tirefem

@@ -2,6 +2,8 @@
 // The files of one study in the results folder: tables, VTU files and plots of a loaded state and of a
 // rolling study, each report guarded so that one that cannot be drawn is skipped with a note.
 #include <string>
+
+#include <toml++/toml.h>
 #include <vector>
 
 #include "tirefem/analysis/footprint.hpp"
@@ -55,9 +57,11 @@ void write_loaded_state(const ResultsFolder& folder, ReportWriter& plots, const 
 void write_rolling(const ResultsFolder& folder, ReportWriter& plots, const TyreMesh& tm, const Case& c,
                    const RollingResult& r);
 
-// A tyre test: NAME/tyre_test.csv (the measurement table), NAME/vertical.csv, with a fit NAME/NAME.tir, and
-// the plots of FX(κ), FY(α), MZ(α) at every load and of the vertical characteristic (with the fitted curves).
-void write_tyre_test(const ResultsFolder& folder, ReportWriter& plots, const TyreTestResult& t,
-                     const TyreTestFit* fit = nullptr);
+// A tyre test: fits its Magic Formula (progress: the fit's errors and normalised figures), writes
+// NAME/tyre_test.csv (the measurement table), NAME/vertical.csv, with a fit NAME/NAME.tir, and the plots of
+// FX(κ), FY(α), MZ(α) at every load and of the vertical characteristic; returns its summary.json entry. A
+// fit or a report that cannot be made is skipped with a note.
+toml::table report_tyre_test(const ResultsFolder& folder, ReportWriter& plots, const ProgressSink& progress,
+                             const Case& c, const TyreTestResult& t);
 
 }  // namespace tirefem

@@ -33,8 +33,8 @@ TyreTestFit fit_tyre_test(const TyreTestResult& t, const TyreDescription& tyre, 
   f.coefficients = fit.coefficients;
   MagicFormulaCoefficients& c = f.coefficients;
   // Dimensions from the carcass line (the faces and the tread add a few mm outside it).
-  double width = 0, lowest = 1e300;
-  for (const Eigen::Vector2d& p : tyre.profile) width = std::max(width, 2 * p.x()), lowest = std::min(lowest, p.y());
+  double width = 0;
+  for (const Eigen::Vector2d& p : tyre.profile) width = std::max(width, 2 * p.x());
   c.UNLOADED_RADIUS = data.UNLOADED_RADIUS;
   c.WIDTH = width * 1e-3;
   c.RIM_RADIUS = tyre.profile.back().y() * 1e-3;
