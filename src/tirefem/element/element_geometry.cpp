@@ -56,6 +56,31 @@ TyingWeights make_tying_weights() {
   return t;
 }
 
+// EAS-4 of a face at (ξ, η): Ẽ = (j0/j) Σ Ê_ij G0^i ⊗ G0^j with Ê_ξξ = ξ α1, Ê_ηη = η α2,
+// 2Ê_ξη = ξ α3 + η α4, in the point's local frame: with c_ai = e_a · G0^i,
+// E_ab = Σ_ij c_ai c_bj Ê_ij.
+Eigen::Matrix<double, 3, 4> enhanced_strain_map(const Eigen::Vector3d& g1_centre, const Eigen::Vector3d& g2_centre,
+                                                const LocalFrame& frame, double xi, double eta, double area_scale) {
+  Eigen::Matrix2d metric;
+  metric << g1_centre.dot(g1_centre), g1_centre.dot(g2_centre), g2_centre.dot(g1_centre), g2_centre.dot(g2_centre);
+  const Eigen::Matrix2d inverse = metric.inverse();
+  const Eigen::Vector3d contra1 = inverse(0, 0) * g1_centre + inverse(0, 1) * g2_centre;
+  const Eigen::Vector3d contra2 = inverse(1, 0) * g1_centre + inverse(1, 1) * g2_centre;
+  const double c11 = frame.e1.dot(contra1), c12 = frame.e1.dot(contra2);
+  const double c21 = frame.e2.dot(contra1), c22 = frame.e2.dot(contra2);
+  // Local strains per unit Ê_ξξ, Ê_ηη and 2Ê_ξη.
+  const Eigen::Vector3d per_xixi(c11 * c11, c21 * c21, 2 * c11 * c21);
+  const Eigen::Vector3d per_etaeta(c12 * c12, c22 * c22, 2 * c12 * c22);
+  const Eigen::Vector3d per_shear(c11 * c12, c21 * c22, c11 * c22 + c12 * c21);
+  const double scale = g1_centre.cross(g2_centre).norm() / area_scale;  // j0 / j
+  Eigen::Matrix<double, 3, 4> m;
+  m.col(0) = scale * xi * per_xixi;
+  m.col(1) = scale * eta * per_etaeta;
+  m.col(2) = scale * xi * per_shear;
+  m.col(3) = scale * eta * per_shear;
+  return m;
+}
+
 }  // namespace
 
 const TyingWeights& tying_weights() {
@@ -67,11 +92,12 @@ FaceGeometry face_geometry(const NodeMatrix& reference, int offset, double xi, d
   const BilinearShape s = bilinear_shape(xi, eta);
   const BilinearShape centre = bilinear_shape(0.0, 0.0);
   Eigen::Vector3d g1 = Eigen::Vector3d::Zero(), g2 = Eigen::Vector3d::Zero(),
-                  g1_centre = Eigen::Vector3d::Zero();
+                  g1_centre = Eigen::Vector3d::Zero(), g2_centre = Eigen::Vector3d::Zero();
   for (int a = 0; a < 4; ++a) {
     g1 += s.dn_dxi[a] * reference.col(offset + a);
     g2 += s.dn_deta[a] * reference.col(offset + a);
     g1_centre += centre.dn_dxi[a] * reference.col(offset + a);
+    g2_centre += centre.dn_deta[a] * reference.col(offset + a);
   }
   const Eigen::Vector3d normal = g1.cross(g2);
   const LocalFrame frame = tangent_frame(normal, g1_centre);
@@ -87,6 +113,7 @@ FaceGeometry face_geometry(const NodeMatrix& reference, int offset, double xi, d
   g.area_scale = normal.norm();
   g.e1 = frame.e1;
   g.e2 = frame.e2;
+  g.enhanced = enhanced_strain_map(g1_centre, g2_centre, frame, xi, eta, g.area_scale);
   return g;
 }
 

@@ -25,6 +25,10 @@ struct FaceGeometry {
   Eigen::Vector4d d1, d2;      // ∂N_a/∂X_1, ∂N_a/∂X_2 in the face's local frame
   double area_scale = 0.0;     // |G1 × G2|
   Eigen::Vector3d e1, e2;      // the local frame's in-plane axes (1 along ξ)
+  // The face's enhanced assumed strains (Simo–Rifai EAS-4) at this point: local [E11, E22, 2E12] per unit
+  // enhanced parameter, (j0/j) G0^i ⊗ G0^j components of Ê_ξξ = ξ α1, Ê_ηη = η α2, 2Ê_ξη = ξ α3 + η α4
+  // (G0^i the contravariant base at the face centre). They integrate to zero over the face.
+  Eigen::Matrix<double, 3, 4> enhanced = Eigen::Matrix<double, 3, 4>::Zero();
 };
 
 // The interlayer's 8 covariant tying strains E_t = ½(a_t · b_t − A_t · B_t), a_t = Σ α_t[k] x_k,

@@ -30,33 +30,75 @@ FaceStrain face_strain(const FaceGeometry& g, const Eigen::Matrix<double, 3, 4>&
   return s;
 }
 
-// Adds the energy ½ εᵀ A ε w of a face at one point, its gradient and its Hessian (face nodes only).
-template <int First>
-void add_face(const FaceGeometry& g, const NodeMatrix& reference, const NodeMatrix& u,
-              const Eigen::Matrix3d& stiffness, bool nonlinear, bool with_tangent, ElementResponse& out) {
-  const FaceStrain s =
-      face_strain(g, reference.middleCols<4>(First), u.middleCols<4>(First), nonlinear);
-  const double w = g.area_scale;
-  const Eigen::Vector3d stress = stiffness * s.strain;
-  out.energy += 0.5 * w * s.strain.dot(stress);
-  Eigen::Matrix<double, 3, 12> b;  // rows: ∂[E11, E22, 2E12]/∂x_a
-  for (int a = 0; a < 4; ++a) {
-    b.block<1, 3>(0, 3 * a) = g.d1[a] * s.f1.transpose();
-    b.block<1, 3>(1, 3 * a) = g.d2[a] * s.f2.transpose();
-    b.block<1, 3>(2, 3 * a) = g.d1[a] * s.f2.transpose() + g.d2[a] * s.f1.transpose();
+// One face's enhanced-strain parameters, condensed: the energy ½ Σ_p w_p (E_p + M_p α)ᵀ A (E_p + M_p α)
+// is quadratic in α, so its minimiser is α = −H⁻¹ r, H = Σ w Mᵀ A M, r = Σ w Mᵀ A E, exactly.
+struct FaceEnhancement {
+  Eigen::Vector4d alpha = Eigen::Vector4d::Zero();
+  Eigen::LLT<Eigen::Matrix4d> h;  // factor of H
+  bool active = false;
+};
+
+using FacePoints = std::array<FaceGeometry, 4>;
+using FaceStrains = std::array<FaceStrain, 4>;
+
+FaceEnhancement face_enhancement(const FacePoints& points, const FaceStrains& strains,
+                                 const Eigen::Matrix3d& stiffness, bool enhanced) {
+  FaceEnhancement out;
+  if (!enhanced) return out;
+  Eigen::Matrix4d h = Eigen::Matrix4d::Zero();
+  Eigen::Vector4d r = Eigen::Vector4d::Zero();
+  for (int p = 0; p < 4; ++p) {
+    const Eigen::Matrix<double, 3, 4> am = (points[p].area_scale * stiffness) * points[p].enhanced;
+    h.noalias() += points[p].enhanced.transpose() * am;
+    r.noalias() += am.transpose() * strains[p].strain;
   }
-  out.force.segment<12>(3 * First).noalias() += b.transpose() * (w * stress);
-  if (!with_tangent) return;
-  const Eigen::Matrix<double, 3, 12> cb = (w * stiffness) * b;
-  out.tangent.block<12, 12>(3 * First, 3 * First).noalias() += b.transpose().lazyProduct(cb);
-  if (!nonlinear) return;
-  const Eigen::Vector3d ws = w * stress;  // geometric stiffness Σ_c S_c ∂²E_c ⊗ I3
-  for (int l = 0; l < 4; ++l)
-    for (int k = 0; k < 4; ++k) {
-      const double h = ws[0] * g.d1[k] * g.d1[l] + ws[1] * g.d2[k] * g.d2[l] +
-                       ws[2] * (g.d1[k] * g.d2[l] + g.d2[k] * g.d1[l]);
-      for (int i = 0; i < 3; ++i) out.tangent(3 * (First + k) + i, 3 * (First + l) + i) += h;
+  out.h.compute(h);
+  if (out.h.info() != Eigen::Success) return out;  // a face without in-plane stiffness: nothing to enhance
+  out.alpha = -out.h.solve(r);
+  out.active = true;
+  return out;
+}
+
+// Adds a face's energy Σ_p ½ εᵀ A ε w_p, ε = E_p + M_p α (compatible + condensed enhanced strains), its
+// gradient Σ w Bᵀ A ε and its Hessian Σ w Bᵀ A B − Lᵀ H⁻¹ L + Σ w (Aε)·∂²E, L = Σ w Mᵀ A B (face nodes only).
+template <int First>
+void add_face(const FacePoints& points, const NodeMatrix& reference, const NodeMatrix& u,
+              const Eigen::Matrix3d& stiffness, bool enhanced, bool nonlinear, bool with_tangent,
+              ElementResponse& out) {
+  FaceStrains strains;
+  for (int p = 0; p < 4; ++p)
+    strains[p] = face_strain(points[p], reference.middleCols<4>(First), u.middleCols<4>(First), nonlinear);
+  const FaceEnhancement enh = face_enhancement(points, strains, stiffness, enhanced);
+  Eigen::Matrix<double, 4, 12> coupling = Eigen::Matrix<double, 4, 12>::Zero();  // L
+  for (int p = 0; p < 4; ++p) {
+    const FaceGeometry& g = points[p];
+    const FaceStrain& s = strains[p];
+    const double w = g.area_scale;
+    const Eigen::Vector3d strain = enh.active ? Eigen::Vector3d(s.strain + g.enhanced * enh.alpha) : s.strain;
+    const Eigen::Vector3d stress = stiffness * strain;
+    out.energy += 0.5 * w * strain.dot(stress);
+    Eigen::Matrix<double, 3, 12> b;  // rows: ∂[E11, E22, 2E12]/∂x_a
+    for (int a = 0; a < 4; ++a) {
+      b.block<1, 3>(0, 3 * a) = g.d1[a] * s.f1.transpose();
+      b.block<1, 3>(1, 3 * a) = g.d2[a] * s.f2.transpose();
+      b.block<1, 3>(2, 3 * a) = g.d1[a] * s.f2.transpose() + g.d2[a] * s.f1.transpose();
     }
+    out.force.segment<12>(3 * First).noalias() += b.transpose() * (w * stress);
+    if (!with_tangent) continue;
+    const Eigen::Matrix<double, 3, 12> cb = (w * stiffness) * b;
+    out.tangent.block<12, 12>(3 * First, 3 * First).noalias() += b.transpose().lazyProduct(cb);
+    if (enh.active) coupling.noalias() += g.enhanced.transpose() * cb;
+    if (!nonlinear) continue;
+    const Eigen::Vector3d ws = w * stress;  // geometric stiffness Σ_c S_c ∂²E_c ⊗ I3
+    for (int l = 0; l < 4; ++l)
+      for (int k = 0; k < 4; ++k) {
+        const double h = ws[0] * g.d1[k] * g.d1[l] + ws[1] * g.d2[k] * g.d2[l] +
+                         ws[2] * (g.d1[k] * g.d2[l] + g.d2[k] * g.d1[l]);
+        for (int i = 0; i < 3; ++i) out.tangent(3 * (First + k) + i, 3 * (First + l) + i) += h;
+      }
+  }
+  if (with_tangent && enh.active)
+    out.tangent.block<12, 12>(3 * First, 3 * First).noalias() -= coupling.transpose() * enh.h.solve(coupling);
 }
 
 // ---- interlayer --------------------------------------------------------------------------------
@@ -117,6 +159,16 @@ void add_core(const std::array<CoreGeometry, 4>& points, const NodeMatrix& refer
     }
 }
 
+// A face's condensed enhanced-strain parameters in a given state (zero without enhancement).
+template <int First>
+Eigen::Vector4d face_alpha(const FacePoints& points, const NodeMatrix& reference, const NodeMatrix& u,
+                           const Eigen::Matrix3d& stiffness, bool enhanced, bool nonlinear) {
+  FaceStrains strains;
+  for (int p = 0; p < 4; ++p)
+    strains[p] = face_strain(points[p], reference.middleCols<4>(First), u.middleCols<4>(First), nonlinear);
+  return face_enhancement(points, strains, stiffness, enhanced).alpha;
+}
+
 }  // namespace
 
 ElementResponse three_layer_element(const ElementGeometry& geometry, const NodeMatrix& reference,
@@ -125,10 +177,8 @@ ElementResponse three_layer_element(const ElementGeometry& geometry, const NodeM
   ElementResponse out;
   const bool nonlinear = kinematics == Kinematics::nonlinear;
   const NodeMatrix u = current - reference;
-  for (int p = 0; p < 4; ++p) {
-    add_face<0>(geometry.inner[p], reference, u, section.inner_face, nonlinear, with_tangent, out);
-    add_face<4>(geometry.outer[p], reference, u, section.outer_face, nonlinear, with_tangent, out);
-  }
+  add_face<0>(geometry.inner, reference, u, section.inner_face, section.enhanced_faces, nonlinear, with_tangent, out);
+  add_face<4>(geometry.outer, reference, u, section.outer_face, section.enhanced_faces, nonlinear, with_tangent, out);
   add_core(geometry.core, reference, u, section, nonlinear, with_tangent, out);
   return out;
 }
@@ -139,9 +189,14 @@ ElementPointState three_layer_point_state(const NodeMatrix& reference, const Nod
   const bool nonlinear = kinematics == Kinematics::nonlinear;
   const NodeMatrix u = current - reference;
   const FaceGeometry inner = face_geometry(reference, 0, xi, eta), outer = face_geometry(reference, 4, xi, eta);
+  const ElementGeometry at_gauss = element_geometry(reference);
   ElementPointState st;
-  st.inner_strain = face_strain(inner, reference.leftCols<4>(), u.leftCols<4>(), nonlinear).strain;
-  st.outer_strain = face_strain(outer, reference.rightCols<4>(), u.rightCols<4>(), nonlinear).strain;
+  st.inner_strain = face_strain(inner, reference.leftCols<4>(), u.leftCols<4>(), nonlinear).strain +
+                    inner.enhanced * face_alpha<0>(at_gauss.inner, reference, u, section.inner_face,
+                                                   section.enhanced_faces, nonlinear);
+  st.outer_strain = face_strain(outer, reference.rightCols<4>(), u.rightCols<4>(), nonlinear).strain +
+                    outer.enhanced * face_alpha<4>(at_gauss.outer, reference, u, section.outer_face,
+                                                   section.enhanced_faces, nonlinear);
   st.inner_resultant = section.inner_face * st.inner_strain;
   st.outer_resultant = section.outer_face * st.outer_strain;
   const Eigen::Vector3d core =
