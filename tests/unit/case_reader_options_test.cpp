@@ -1,6 +1,7 @@
 // The case reader's modelling options of issue 10 item 5: where deflections are measured from
 // (deflection_from), footprints at a given deflection, and the meridional grading of the mesh.
 #include "tirefem/case/case_reader.hpp"
+#include "tirefem/tyre/tyre_mesh.hpp"
 
 #include <gtest/gtest.h>
 
@@ -74,6 +75,19 @@ TEST(CaseReaderOptions, ReadsTheMeridionalGrading) {
   EXPECT_EQ(error_of(edited("meridional_elements = 46", "meridional_elements = 3\nmeridional_grading = "
                                                         "\"uniform_arc_length\"")),
             "(no error)");
+}
+
+TEST(CaseReaderOptions, ReadsTheFaceStrains) {
+  EXPECT_EQ(parse_case(tyre_with(kLoadCurve), "case.toml").mesh.faces, MeshSettings::Faces::compatible);
+  const Case c = parse_case(edited("circumferential_refinement = 4.0\n",
+                                   "circumferential_refinement = 4.0\nfaces = \"enhanced\"\n"),
+                            "case.toml");
+  EXPECT_EQ(c.mesh.faces, MeshSettings::Faces::enhanced);
+  const TyreMesh tm = build_tyre_mesh(c.tyre, c.mesh);
+  EXPECT_TRUE(tm.sections.front().enhanced_faces);
+  EXPECT_CONTAINS(error_of(edited("circumferential_refinement = 4.0\n",
+                                  "circumferential_refinement = 4.0\nfaces = \"eas\"\n")),
+                  "mesh.faces: must be \"compatible\" or \"enhanced\" (got \"eas\")");
 }
 
 }  // namespace

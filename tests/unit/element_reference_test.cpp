@@ -34,8 +34,7 @@ TEST(ElementReference, ForceTangentAndEnergyEqualTheFormerElementToRoundOff) {
       NodeMatrix x = x0;
       for (int k = 0; k < 8; ++k)
         for (int c = 0; c < 3; ++c) x(c, k) += u(rng);
-      ElementSection section = anisotropic_test_section();
-      section.enhanced_faces = false;
+      const ElementSection section = anisotropic_test_section();
       const ElementResponse now = three_layer_element(element_geometry(x0), x0, x, section, kinematics);
       const ElementResponse before = reference::three_layer_element(x0, x, section, kinematics);
       const char* theory = kinematics == Kinematics::nonlinear ? "nonlinear" : "linear";

@@ -8,7 +8,7 @@ namespace tirefem {
 
 InflatedTyres::Entry& InflatedTyres::entry(const MeshSettings& m) {
   return entries_[{m.circumferential_elements, m.meridional_elements, m.half_model, m.circumferential_refinement,
-                    static_cast<int>(m.meridional_grading)}];
+                    static_cast<int>(m.meridional_grading), static_cast<int>(m.faces)}];
 }
 
 const TyreMesh& InflatedTyres::mesh(const MeshSettings& m) {
@@ -48,10 +48,10 @@ void InflatedTyres::adopt(const MeshSettings& m, const InflationResult& r) {
 
 std::string SharedFootprints::key(const MeshSettings& m, const SupportDescription& s, double load,
                                   double tolerance) {
-  std::string k = fmt::format("{} {} {} {:a} {} | {} {:a} | {:a} {:a}", m.circumferential_elements,
+  std::string k = fmt::format("{} {} {} {:a} {} {} | {} {:a} | {:a} {:a}", m.circumferential_elements,
                               m.meridional_elements, m.half_model, m.circumferential_refinement,
-                              static_cast<int>(m.meridional_grading), static_cast<int>(s.kind), s.drum_diameter,
-                              load, tolerance);
+                              static_cast<int>(m.meridional_grading), static_cast<int>(m.faces),
+                              static_cast<int>(s.kind), s.drum_diameter, load, tolerance);
   for (const auto& t : s.terms) k += fmt::format(" {:a} {} {}", t.coefficient, t.x_power, t.y_power);
   return k;
 }

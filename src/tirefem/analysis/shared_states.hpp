@@ -35,7 +35,7 @@ class InflatedTyres {
   ProgressSink progress_;
   std::function<void(const MeshSettings&, double)> solved_;
   std::recursive_mutex mutex_;
-  std::map<std::tuple<int, int, bool, double, int>, Entry> entries_;
+  std::map<std::tuple<int, int, bool, double, int, int>, Entry> entries_;
 };
 
 // Completed static footprints by mesh, support and target load: a rolling study at the load and on the

@@ -69,6 +69,10 @@ struct MeshSettings {
   // the zone of its centre.
   enum class MeridionalGrading { zones, uniform_arc_length };
   MeridionalGrading meridional_grading = MeridionalGrading::zones;
+  // The faces' in-plane strains: compatible (the paper's bilinear faces, the default) or enhanced (EAS-4: no
+  // parasitic shear when a face bends in its plane; see README, "How fine a mesh").
+  enum class Faces { compatible, enhanced };
+  Faces faces = Faces::compatible;
 };
 
 struct InflationSettings {

@@ -10,7 +10,7 @@ MeshSettings read_mesh(TomlFields& f, const toml::node& n, const std::string& pa
   const toml::table& t = f.table(
       n, path,
       {"circumferential_elements", "meridional_elements", "half_model", "circumferential_refinement",
-       "meridional_grading"});
+       "meridional_grading", "faces"});
   f.opt_integer(t, path, "circumferential_elements", m.circumferential_elements);
   f.opt_integer(t, path, "meridional_elements", m.meridional_elements);
   f.opt_bool(t, path, "half_model", m.half_model);
@@ -19,6 +19,9 @@ MeshSettings read_mesh(TomlFields& f, const toml::node& n, const std::string& pa
     m.meridional_grading = f.choice(*v, join(path, "meridional_grading"), {"zones", "uniform_arc_length"}) == 1
                                ? MeshSettings::MeridionalGrading::uniform_arc_length
                                : MeshSettings::MeridionalGrading::zones;
+  if (const toml::node* v = f.get(t, path, "faces"))
+    m.faces = f.choice(*v, join(path, "faces"), {"compatible", "enhanced"}) == 1 ? MeshSettings::Faces::enhanced
+                                                                                 : MeshSettings::Faces::compatible;
   return m;
 }
 

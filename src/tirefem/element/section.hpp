@@ -14,9 +14,9 @@ struct ElementSection {
   MembraneStiffness outer_face = MembraneStiffness::Zero();  // breaker / sidewall layer
   double core_shear_modulus = 0.0;   // transverse shear modulus G13 = G23 of the interlayer, MPa
   double core_normal_modulus = 0.0;  // through-thickness modulus of the interlayer, MPa
-  // The faces' in-plane strains enriched by enhanced assumed strains (EAS-4), condensed per element: no
-  // parasitic shear when a face bends in its plane. false: the paper's compatible bilinear faces.
-  bool enhanced_faces = true;
+  // false: the paper's compatible bilinear faces. true: their in-plane strains enriched by enhanced
+  // assumed strains (EAS-4), condensed per element: no parasitic shear when a face bends in its plane.
+  bool enhanced_faces = false;
 };
 
 // Isotropic membrane of thickness t (plane stress): A = E t / (1 − ν²) [[1, ν, 0], [ν, 1, 0], [0, 0, (1 − ν)/2]].

@@ -124,6 +124,7 @@ TyreMesh build_tyre_mesh(const TyreDescription& tyre, const MeshSettings& settin
     sec.outer_face = face_stiffness(z.outer);
     sec.core_shear_modulus = z.core_shear_modulus;
     sec.core_normal_modulus = z.core_normal_modulus;
+    sec.enhanced_faces = settings.faces == MeshSettings::Faces::enhanced;
     zone_sections.push_back(sec);
   }
 
