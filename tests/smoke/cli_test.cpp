@@ -226,6 +226,7 @@ TEST(Cli, RunWritesAllResultsOfTheCoarseCase) {
                           "\"max_belt_cord_force_N\"", "\"newton_iterations\""})
     EXPECT_NE(summary.find(key), std::string::npos) << key;
   EXPECT_NE(summary.find("\"converged\" : true"), std::string::npos);
+  EXPECT_NE(summary.find("\"faces\" : \"compatible\""), std::string::npos) << "summary.json: mesh.faces";
   EXPECT_EQ(top_level_value(summary, "load_curves"), "[") << "summary.json: load_curves must be an array";
   EXPECT_EQ(top_level_value(summary, "footprints"), "[") << "summary.json: footprints must be an array";
   EXPECT_EQ(top_level_value(summary, "rolling"), "[") << "summary.json: rolling must be an array";

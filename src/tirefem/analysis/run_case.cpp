@@ -159,7 +159,9 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
                       {"blas", blas_table()},
                       {"mesh", toml::table{{"circumferential_elements", c.mesh.circumferential_elements},
                                            {"meridional_elements", c.mesh.meridional_elements},
-                                           {"model", c.mesh.half_model ? "half" : "full"}}}};
+                                           {"model", c.mesh.half_model ? "half" : "full"},
+                                           {"faces", c.mesh.faces == MeshSettings::Faces::enhanced ? "enhanced"
+                                                                                                  : "compatible"}}}};
 
   times.end();
   ReportWriter inflation_plots(folder, progress);
