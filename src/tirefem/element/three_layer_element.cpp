@@ -41,6 +41,15 @@ struct FaceEnhancement {
 using FacePoints = std::array<FaceGeometry, 4>;
 using FaceStrains = std::array<FaceStrain, 4>;
 
+// A face's compatible strains at its 4 points (face nodes First … First + 3).
+template <int First>
+FaceStrains face_strains(const FacePoints& points, const NodeMatrix& reference, const NodeMatrix& u, bool nonlinear) {
+  FaceStrains strains;
+  for (int p = 0; p < 4; ++p)
+    strains[p] = face_strain(points[p], reference.middleCols<4>(First), u.middleCols<4>(First), nonlinear);
+  return strains;
+}
+
 FaceEnhancement face_enhancement(const FacePoints& points, const FaceStrains& strains,
                                  const Eigen::Matrix3d& stiffness, bool enhanced) {
   FaceEnhancement out;
@@ -65,9 +74,7 @@ template <int First>
 void add_face(const FacePoints& points, const NodeMatrix& reference, const NodeMatrix& u,
               const Eigen::Matrix3d& stiffness, bool enhanced, bool nonlinear, bool with_tangent,
               ElementResponse& out) {
-  FaceStrains strains;
-  for (int p = 0; p < 4; ++p)
-    strains[p] = face_strain(points[p], reference.middleCols<4>(First), u.middleCols<4>(First), nonlinear);
+  const FaceStrains strains = face_strains<First>(points, reference, u, nonlinear);
   const FaceEnhancement enh = face_enhancement(points, strains, stiffness, enhanced);
   Eigen::Matrix<double, 4, 12> coupling = Eigen::Matrix<double, 4, 12>::Zero();  // L
   for (int p = 0; p < 4; ++p) {
@@ -159,14 +166,11 @@ void add_core(const std::array<CoreGeometry, 4>& points, const NodeMatrix& refer
     }
 }
 
-// A face's condensed enhanced-strain parameters in a given state (zero without enhancement).
+// A face's condensed enhanced-strain parameters in a given state.
 template <int First>
 Eigen::Vector4d face_alpha(const FacePoints& points, const NodeMatrix& reference, const NodeMatrix& u,
-                           const Eigen::Matrix3d& stiffness, bool enhanced, bool nonlinear) {
-  FaceStrains strains;
-  for (int p = 0; p < 4; ++p)
-    strains[p] = face_strain(points[p], reference.middleCols<4>(First), u.middleCols<4>(First), nonlinear);
-  return face_enhancement(points, strains, stiffness, enhanced).alpha;
+                           const Eigen::Matrix3d& stiffness, bool nonlinear) {
+  return face_enhancement(points, face_strains<First>(points, reference, u, nonlinear), stiffness, true).alpha;
 }
 
 }  // namespace
@@ -189,14 +193,14 @@ ElementPointState three_layer_point_state(const NodeMatrix& reference, const Nod
   const bool nonlinear = kinematics == Kinematics::nonlinear;
   const NodeMatrix u = current - reference;
   const FaceGeometry inner = face_geometry(reference, 0, xi, eta), outer = face_geometry(reference, 4, xi, eta);
-  const ElementGeometry at_gauss = element_geometry(reference);
   ElementPointState st;
-  st.inner_strain = face_strain(inner, reference.leftCols<4>(), u.leftCols<4>(), nonlinear).strain +
-                    inner.enhanced * face_alpha<0>(at_gauss.inner, reference, u, section.inner_face,
-                                                   section.enhanced_faces, nonlinear);
-  st.outer_strain = face_strain(outer, reference.rightCols<4>(), u.rightCols<4>(), nonlinear).strain +
-                    outer.enhanced * face_alpha<4>(at_gauss.outer, reference, u, section.outer_face,
-                                                   section.enhanced_faces, nonlinear);
+  st.inner_strain = face_strain(inner, reference.leftCols<4>(), u.leftCols<4>(), nonlinear).strain;
+  st.outer_strain = face_strain(outer, reference.rightCols<4>(), u.rightCols<4>(), nonlinear).strain;
+  if (section.enhanced_faces) {  // the enhanced strains need the parameters from the Gauss points
+    const ElementGeometry at_gauss = element_geometry(reference);
+    st.inner_strain += inner.enhanced * face_alpha<0>(at_gauss.inner, reference, u, section.inner_face, nonlinear);
+    st.outer_strain += outer.enhanced * face_alpha<4>(at_gauss.outer, reference, u, section.outer_face, nonlinear);
+  }
   st.inner_resultant = section.inner_face * st.inner_strain;
   st.outer_resultant = section.outer_face * st.outer_strain;
   const Eigen::Vector3d core =

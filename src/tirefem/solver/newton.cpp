@@ -160,9 +160,9 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
       return out;
     }
     if (it >= settings_.max_iterations) return out;
-    // Diverging. Not when a stable state is sought on a potential: after leaving a saddle the descent towards
-    // the buckled (wrinkled) state raises the residual by orders of magnitude while the energy falls (the
-    // coarse example mesh's inflated saddle: 1e2 relative), and max_iterations bounds it.
+    // Diverging. Not when a stable state is sought on a potential: after leaving a saddle, the energy-checked
+    // descent towards the buckled (wrinkled) state can raise the residual by orders of magnitude (the
+    // coarse example mesh's inflated saddle: to 1e2 relative); max_iterations bounds it.
     if (it >= 3 && rn > 1e4 * first_residual && !(settings_.stable_equilibrium && potential)) return out;
     Eigen::VectorXd du;
     // A step from a reused factorisation that made the residual grow was too inexact for this
