@@ -5,6 +5,8 @@
 #include <map>
 #include <stdexcept>
 
+#include "tirefem/forms/strip_blocks.hpp"
+
 namespace tirefem {
 
 namespace {
@@ -31,6 +33,16 @@ TreadFrictionForm::TreadFrictionForm(const ShellMesh& mesh, std::vector<TreadPoi
   line_position_.assign(points_.size(), -1);
   for (const auto& line : lines_)
     for (int i = 0; i < static_cast<int>(line.size()); ++i) line_position_[line[i]] = i;
+  std::map<std::vector<int>, int> strip_of;  // a line's elements → its strip
+  for (int l = 0; l < static_cast<int>(lines_.size()); ++l) {
+    std::vector<int> elements;
+    for (int q : lines_[l]) elements.push_back(points_[q].element);
+    std::sort(elements.begin(), elements.end());
+    elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
+    const auto [it, added] = strip_of.try_emplace(std::move(elements), static_cast<int>(strips_.size()));
+    if (added) strips_.emplace_back();
+    strips_[it->second].push_back(l);
+  }
 }
 
 void TreadFrictionForm::add_pattern(PatternBuilder& pattern) const {
@@ -150,102 +162,111 @@ int TreadFrictionForm::contact_outside_window(const Eigen::VectorXd& u) const {
   return n;
 }
 
+TreadFrictionForm::PointForce TreadFrictionForm::point_force(int q, const FrictionPlanPoint& pp, const Eigen::VectorXd& u,
+                                                               bool released) const {
+  PointForce out;
+  const TreadPoint& p = points_[q];
+  const PointKinematics k = kinematics(q, u);
+  const double norm = k.travel.gradient.norm();
+  const Eigen::Vector3d t = k.travel.gradient / norm;  // unit, along the support's motion
+  // ∂t/∂x = (I − t tᵀ) ∂²ξ / |∇ξ|
+  const Eigen::Matrix3d dt = (Eigen::Matrix3d::Identity() - t * t.transpose()) * k.travel.hessian / norm;
+  double magnitude = 0.0;  // traction × area: the force on the tyre is magnitude · t
+  // ∂(magnitude)/∂x at up to three points: this one, and the anchor's a and b.
+  Eigen::Vector3d d_self = Eigen::Vector3d::Zero(), d_other[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  if (pp.status == TreadContact::slip) {
+    // eq. (17) {Fsl}, [Ksl]: σ μ kp g, depending on the normal displacement only.
+    const double c = pp.sign * law_.friction * kp_ * p.weight;
+    magnitude = c * k.penetration.value;
+    d_self = c * k.penetration.gradient;
+  } else {
+    // eq. (17) {Fst}, [Kst]: (G/hp) s, with s from the anchor (eq. 16).
+    const double c = shear_modulus_ / p.height * p.weight;
+    const double wb = pp.anchor_weight, wa = 1.0 - wb;
+    const PointKinematics ka = kinematics(pp.anchor_a, u);
+    const PointKinematics kb = pp.anchor_b == pp.anchor_a ? ka : kinematics(pp.anchor_b, u);
+    double anchor_shear = 0.0;
+    Eigen::Vector3d d_anchor_shear = Eigen::Vector3d::Zero();
+    if (pp.anchored_on_slip) {
+      anchor_shear = slip_shear(pp.anchor_a, ka.penetration.value, pp.sign);
+      d_anchor_shear = slip_shear(pp.anchor_a, 1.0, pp.sign) * ka.penetration.gradient;
+    }
+    const double anchor_angle = wa * flow_angle(pp.anchor_a) + wb * flow_angle(pp.anchor_b);
+    const double anchor_travel = wa * ka.travel.value + wb * kb.travel.value;
+    const double shear =
+        anchor_shear + rolling_radius_ * (flow_angle(q) - anchor_angle) - (k.travel.value - anchor_travel);
+    magnitude = c * shear;
+    d_self = -c * k.travel.gradient;
+    // Released plan: the entry weight w = −g_a / (g_b − g_a) follows u too (frozen: a constant).
+    Eigen::Vector3d dw_a = Eigen::Vector3d::Zero(), dw_b = Eigen::Vector3d::Zero();
+    if (released && pp.anchor_a != pp.anchor_b && wb > 0.0 && wb < 1.0) {
+      const double ga = ka.penetration.value, gb = kb.penetration.value, d2 = (gb - ga) * (gb - ga);
+      const double ds_dw = -rolling_radius_ * (flow_angle(pp.anchor_b) - flow_angle(pp.anchor_a)) +
+                           (kb.travel.value - ka.travel.value);
+      dw_a = c * ds_dw * (-gb / d2) * ka.penetration.gradient;
+      dw_b = c * ds_dw * (ga / d2) * kb.penetration.gradient;
+    }
+    out.other[0] = pp.anchor_a;
+    d_other[0] = c * (wa * ka.travel.gradient + d_anchor_shear) + dw_a;
+    if (pp.anchor_b != pp.anchor_a) {
+      out.other[1] = pp.anchor_b;
+      d_other[1] = c * wb * kb.travel.gradient + dw_b;
+    } else {
+      d_other[0] += c * wb * ka.travel.gradient;
+    }
+  }
+  out.force = magnitude * t;
+  out.d_self = t * d_self.transpose() + magnitude * dt;
+  for (int j = 0; j < 2; ++j) out.d_other[j] = t * d_other[j].transpose();
+  return out;
+}
+
 void TreadFrictionForm::assemble(const FormInput& input, SparseSystem& system) const {
   if (planar_) return assemble_planar(input, system);
-  const FrictionPlan fresh = frozen_.empty() ? plan(input.displacement) : FrictionPlan{};
-  const FrictionPlan& plan = frozen_.empty() ? fresh : frozen_;
-  const int n = static_cast<int>(points_.size());
-  BlockBatch& batch = system.batch(n);
-#pragma omp parallel for schedule(dynamic, 64)
-  for (int q = 0; q < n; ++q) {
-    const FrictionPlanPoint& pp = plan[q];
-    if (pp.status == TreadContact::out) continue;
-    const TreadPoint& p = points_[q];
-    const PointKinematics k = kinematics(q, input.displacement);
-    const double norm = k.travel.gradient.norm();
-    const Eigen::Vector3d t = k.travel.gradient / norm;  // unit, along the support's motion
-    // ∂t/∂x = (I − t tᵀ) ∂²ξ / |∇ξ|
-    const Eigen::Matrix3d dt = (Eigen::Matrix3d::Identity() - t * t.transpose()) * k.travel.hessian / norm;
-    double magnitude = 0.0;  // traction × area: the force on the tyre is magnitude · t
-    // ∂(magnitude)/∂x at up to three points: this one, and the anchor's a and b.
-    int other[2] = {-1, -1};
-    Eigen::Vector3d d_self = Eigen::Vector3d::Zero(), d_other[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
-    if (pp.status == TreadContact::slip) {
-      // eq. (17) {Fsl}, [Ksl]: σ μ kp g, depending on the normal displacement only.
-      const double c = pp.sign * law_.friction * kp_ * p.weight;
-      magnitude = c * k.penetration.value;
-      d_self = c * k.penetration.gradient;
-    } else {
-      // eq. (17) {Fst}, [Kst]: (G/hp) s, with s from the anchor (eq. 16).
-      const double c = shear_modulus_ / p.height * p.weight;
-      const double wb = pp.anchor_weight, wa = 1.0 - wb;
-      const PointKinematics ka = kinematics(pp.anchor_a, input.displacement);
-      const PointKinematics kb = pp.anchor_b == pp.anchor_a ? ka : kinematics(pp.anchor_b, input.displacement);
-      double anchor_shear = 0.0;
-      Eigen::Vector3d d_anchor_shear = Eigen::Vector3d::Zero();
-      if (pp.anchored_on_slip) {
-        anchor_shear = slip_shear(pp.anchor_a, ka.penetration.value, pp.sign);
-        d_anchor_shear = slip_shear(pp.anchor_a, 1.0, pp.sign) * ka.penetration.gradient;
+  const bool released = frozen_.empty();
+  const FrictionPlan fresh = released ? plan(input.displacement) : FrictionPlan{};
+  const FrictionPlan& plan = released ? fresh : frozen_;
+  // Residual = −force on the tyre, spread over each point's element; tangent rows on that element,
+  // columns on the elements of the point and of its anchor (a stick point), summed per pair of elements
+  // of a strip (forms/strip_blocks.hpp).
+  std::vector<std::vector<ElementPair>> pairs(strips_.size());
+  for (std::size_t st = 0; st < strips_.size(); ++st)
+    for (int l : strips_[st])
+      for (int q : lines_[l]) {
+        const FrictionPlanPoint& pp = plan[q];
+        if (pp.status == TreadContact::out) continue;
+        const int own = points_[q].element;
+        pairs[st].emplace_back(own, own);
+        if (!input.with_tangent || pp.status != TreadContact::stick) continue;
+        pairs[st].emplace_back(own, points_[pp.anchor_a].element);
+        pairs[st].emplace_back(own, points_[pp.anchor_b].element);
       }
-      const double anchor_angle = wa * flow_angle(pp.anchor_a) + wb * flow_angle(pp.anchor_b);
-      const double anchor_travel = wa * ka.travel.value + wb * kb.travel.value;
-      const double shear =
-          anchor_shear + rolling_radius_ * (flow_angle(q) - anchor_angle) - (k.travel.value - anchor_travel);
-      magnitude = c * shear;
-      d_self = -c * k.travel.gradient;
-      // Released plan: the entry weight w = −g_a / (g_b − g_a) follows u too (frozen: a constant).
-      Eigen::Vector3d dw_a = Eigen::Vector3d::Zero(), dw_b = Eigen::Vector3d::Zero();
-      if (frozen_.empty() && pp.anchor_a != pp.anchor_b && wb > 0.0 && wb < 1.0) {
-        const double ga = ka.penetration.value, gb = kb.penetration.value, d2 = (gb - ga) * (gb - ga);
-        const double ds_dw = -rolling_radius_ * (flow_angle(pp.anchor_b) - flow_angle(pp.anchor_a)) +
-                             (kb.travel.value - ka.travel.value);
-        dw_a = c * ds_dw * (-gb / d2) * ka.penetration.gradient;
-        dw_b = c * ds_dw * (ga / d2) * kb.penetration.gradient;
-      }
-      other[0] = pp.anchor_a;
-      d_other[0] = c * (wa * ka.travel.gradient + d_anchor_shear) + dw_a;
-      if (pp.anchor_b != pp.anchor_a) {
-        other[1] = pp.anchor_b;
-        d_other[1] = c * wb * kb.travel.gradient + dw_b;
-      } else {
-        d_other[0] += c * wb * ka.travel.gradient;
-      }
+  const StripSlots slots(std::move(pairs));
+  BlockBatch& batch = system.batch(slots.slots());
+#pragma omp parallel
+  {
+    StripBlocks sums;
+#pragma omp for schedule(dynamic, 1)
+    for (int st = 0; st < slots.strips(); ++st) {
+      if (slots.pairs(st).empty()) continue;
+      sums.reset(slots, st);
+      for (int l : strips_[st])
+        for (int q : lines_[l]) {
+          const FrictionPlanPoint& pp = plan[q];
+          if (pp.status == TreadContact::out) continue;
+          const TreadPoint& p = points_[q];
+          const PointForce f = point_force(q, pp, input.displacement, released);
+          sums.add_residual(p.element, p.shape, -f.force);
+          if (!input.with_tangent) continue;
+          sums.add_tangent(p.element, p.shape, p.element, p.shape, -f.d_self);
+          for (int j = 0; j < 2; ++j)
+            if (f.other[j] >= 0) {
+              const TreadPoint& po = points_[f.other[j]];
+              sums.add_tangent(p.element, p.shape, po.element, po.shape, -f.d_other[j]);
+            }
+        }
+      sums.flush(mesh_, batch, input.with_tangent);
     }
-    // Residual = −force on the tyre, spread over this point's element; tangent rows on this element,
-    // columns on the elements of this point and of its anchor.
-    // Up to three elements of 12 outer-face DOFs; no heap allocation in this loop.
-    std::array<int, 36> dofs{};
-    int m = 0;
-    const auto append = [&](const std::array<int, 4>& pairs) {
-      for (int a = 0; a < 4; ++a)
-        for (int c = 0; c < 3; ++c) dofs[m++] = outer_dof(pairs[a], c);
-    };
-    append(p.pairs);
-    for (int o : other)
-      if (o >= 0) append(points_[o].pairs);
-    using Block = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, 36, 36>;
-    Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 36, 1> f = Eigen::VectorXd::Zero(m);
-    Block tangent;
-    for (int a = 0; a < 4; ++a) f.segment<3>(3 * a) = -p.shape[a] * magnitude * t;
-    if (input.with_tangent) {
-      tangent = Block::Zero(m, m);
-      const Eigen::Matrix3d self = -(t * d_self.transpose() + magnitude * dt);
-      for (int a = 0; a < 4; ++a)
-        for (int b = 0; b < 4; ++b) tangent.block<3, 3>(3 * a, 3 * b) += p.shape[a] * p.shape[b] * self;
-      int column = 12;
-      for (int j = 0; j < 2; ++j) {
-        if (other[j] < 0) continue;
-        const Eigen::Matrix3d cross = -t * d_other[j].transpose();
-        const TreadPoint& po = points_[other[j]];
-        for (int a = 0; a < 4; ++a)
-          for (int b = 0; b < 4; ++b)
-            tangent.block<3, 3>(3 * a, column + 3 * b) += p.shape[a] * po.shape[b] * cross;
-        column += 12;
-      }
-    }
-    const double* block = input.with_tangent ? tangent.data() : nullptr;
-    const double* forces = f.data();
-    batch.set(q, std::span<const int>(dofs.data(), m), forces, block, input.with_tangent);
   }
   system.add(batch);
 }

@@ -118,6 +118,15 @@ class TreadFrictionForm final : public Form {
     Penetration penetration;
   };
   struct PlanarPoint;
+  // 1D mode: the force on the tyre of a point in contact (eq. 17) and its derivatives w.r.t. the
+  // positions of the point itself and of its anchor's points a and b (other: −1 when none).
+  struct PointForce {
+    Eigen::Vector3d force = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d d_self = Eigen::Matrix3d::Zero();
+    int other[2] = {-1, -1};
+    Eigen::Matrix3d d_other[2] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
+  };
+  PointForce point_force(int q, const FrictionPlanPoint& pp, const Eigen::VectorXd& u, bool released) const;
   PointKinematics kinematics(int point, const Eigen::VectorXd& u) const;
   double flow_angle(int point) const { return direction_ * points_[point].v; }
   double slip_shear(int point, double penetration, double sign) const;
@@ -138,6 +147,9 @@ class TreadFrictionForm final : public Form {
   std::vector<TreadPoint> points_;
   std::vector<std::vector<int>> lines_;
   std::vector<int> line_position_;  // per point: its index in its line
+  // Lines through the same elements (a strip of elements: one line per Gauss row), in line order. The
+  // planar tangent couples the elements of a strip only: it is summed per pair of them.
+  std::vector<std::vector<int>> strips_;
   double kp_, shear_modulus_;
   const SupportSurface& support_;
   double direction_;  // ±1: the support moves in direction_ · y

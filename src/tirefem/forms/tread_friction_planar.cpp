@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "tirefem/forms/strip_blocks.hpp"
 #include "tirefem/forms/tread_friction_form.hpp"
 
 namespace tirefem {
@@ -291,62 +292,44 @@ void TreadFrictionForm::assemble_planar(const FormInput& input, SparseSystem& sy
   const FrictionPlan fresh = released ? plan(input.displacement) : FrictionPlan{};
   const FrictionPlan& plan = released ? fresh : frozen_;
   const std::vector<std::vector<int>> deps = planar_dependencies(plan);
-  // Slots: per point in contact, one per element its force depends on (its own first: residual and the
-  // columns of its own element), rows on its own element. Numbered in point order: deterministic sums.
-  const int n = static_cast<int>(points_.size());
-  std::vector<int> first_slot(n + 1, 0);
-  for (int q = 0; q < n; ++q) {
-    const int slots = input.with_tangent ? static_cast<int>(deps[q].size()) : std::min<int>(1, deps[q].size());
-    first_slot[q + 1] = first_slot[q] + slots;
-  }
-  BlockBatch& batch = system.batch(first_slot[n]);
-  const int lines = static_cast<int>(lines_.size());
+  // Summed per pair of elements of a strip (forms/strip_blocks.hpp): rows on the element of a point in
+  // contact, columns on the elements its force depends on (its own: the residual too).
+  std::vector<std::vector<ElementPair>> pairs(strips_.size());
+  for (std::size_t st = 0; st < strips_.size(); ++st)
+    for (int l : strips_[st])
+      for (int q : lines_[l]) {
+        const int columns = input.with_tangent ? static_cast<int>(deps[q].size()) : std::min<int>(1, deps[q].size());
+        for (int k = 0; k < columns; ++k) pairs[st].emplace_back(deps[q][0], deps[q][k]);
+      }
+  const StripSlots slots(std::move(pairs));
+  BlockBatch& batch = system.batch(slots.slots());
 #pragma omp parallel
   {
     std::vector<PlanarPoint> line_points;
-    using Block = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, 24, 24>;
-    Block tangent;
-    Eigen::Matrix<double, 24, 1> f;
-    std::array<int, 24> dofs{};
+    StripBlocks sums;
 #pragma omp for schedule(dynamic, 1)
-    for (int l = 0; l < lines; ++l) {
-      const std::vector<int>& line = lines_[l];
-      const int first = march_planar(l, plan, input.displacement, released, input.with_tangent, line_points);
-      for (int i = 0; i < static_cast<int>(line.size()); ++i) {
-        const PlanarPoint& o = line_points[i];
-        if (o.status == TreadContact::out) continue;
-        const int q = line[i];
-        const TreadPoint& p = points_[q];
-        const std::vector<int>& d = deps[q];
-        const int slots = input.with_tangent ? static_cast<int>(d.size()) : 1;
-        for (int slot = 0; slot < slots; ++slot) {
-          // Rows: this point's element; columns: element d[slot] (the same for slot 0).
-          const int m = slot == 0 ? 12 : 24, column0 = slot == 0 ? 0 : 12;
-          const std::array<int, 4>& pairs = mesh_.elements[d[slot]];
-          for (int a = 0; a < 4; ++a)
-            for (int c = 0; c < 3; ++c) {
-              dofs[3 * a + c] = outer_dof(p.pairs[a], c);
-              dofs[column0 + 3 * a + c] = outer_dof(pairs[a], c);
-            }
-          f.setZero();
-          if (slot == 0)
-            for (int a = 0; a < 4; ++a) f.segment<3>(3 * a) = -p.shape[a] * o.force;
-          if (input.with_tangent) {
-            tangent.setZero(m, m);
-            for (int j = first; j < first + static_cast<int>(o.d_force.cols()) / 3; ++j) {
-              const TreadPoint& pj = points_[line[j]];
-              if (pj.element != d[slot]) continue;
-              const Eigen::Matrix3d block = -o.d_force.middleCols<3>(3 * (j - first));
-              for (int a = 0; a < 4; ++a)
-                for (int b = 0; b < 4; ++b)
-                  tangent.block<3, 3>(3 * a, column0 + 3 * b) += p.shape[a] * pj.shape[b] * block;
-            }
+    for (int st = 0; st < slots.strips(); ++st) {
+      if (slots.pairs(st).empty()) continue;
+      sums.reset(slots, st);
+      for (int l : strips_[st]) {
+        const std::vector<int>& line = lines_[l];
+        const int first = march_planar(l, plan, input.displacement, released, input.with_tangent, line_points);
+        for (int i = 0; i < static_cast<int>(line.size()); ++i) {
+          const PlanarPoint& o = line_points[i];
+          if (o.status == TreadContact::out) continue;
+          const TreadPoint& pt = points_[line[i]];
+          sums.add_residual(pt.element, pt.shape, -o.force);
+          if (!input.with_tangent) continue;
+          // Columns of points this one does not depend on are exact zeros (and their pairs not slots).
+          for (int j = first; j < first + static_cast<int>(o.d_force.cols()) / 3; ++j) {
+            const auto d = o.d_force.middleCols<3>(3 * (j - first));
+            if (d.isZero(0.0)) continue;
+            const TreadPoint& pj = points_[line[j]];
+            sums.add_tangent(pt.element, pt.shape, pj.element, pj.shape, -d);
           }
-          const double* forces = f.data();
-          const double* block = input.with_tangent ? tangent.data() : nullptr;
-          batch.set(first_slot[q] + slot, std::span<const int>(dofs.data(), m), forces, block, input.with_tangent);
         }
       }
+      sums.flush(mesh_, batch, input.with_tangent);
     }
   }
   system.add(batch);
