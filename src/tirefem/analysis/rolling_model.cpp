@@ -74,8 +74,9 @@ RollingModel::RollingModel(const TyreMesh& tm, const TyreDescription& tyre, cons
   ns.max_iterations = settings.max_newton_iterations;
   ns.residual_tolerance = settings.residual_tolerance;
   // An unsymmetric LU costs about twice a Cholesky: reuse it as GMRES preconditioner while that
-  // converges fast (the tangent changes little between iterations and neighbouring states).
-  ns.reuse_factorization = true;
+  // converges fast (the tangent changes little between iterations and neighbouring states), unless the
+  // case asks for a factorisation per iteration.
+  ns.reuse_factorization = settings.reuse_factorizations;
   // GMRES gives up after 25 iterations (then a fresh LU); measured on the 15-point sweep before the
   // refresh after 8 (NewtonSettings): 12 → 28 LUs, 41 s; 25 → 4 LUs, 31 s; 40 → 65 s.
   ns.max_krylov_iterations = 25;
