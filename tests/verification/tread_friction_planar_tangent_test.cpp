@@ -344,6 +344,26 @@ TEST(TreadFrictionPlanar, EvaluateBoundAndForces) {
 
 // The assembly is parallel over lines and sums per-point slots in point order: residual and tangent must be
 // bit-identical on 1 and 2 threads.
+// The smoothed Jacobian (TreadFrictionForm::set_jacobian_smoothing) changes Newton's direction only:
+// the residual is bit for bit the same, and so is the tangent with a band of 0; with a band wider than
+// any point's excess over the limit every sliding point takes (almost) its stick tangent instead.
+TEST(TreadFrictionPlanar, SmoothedJacobianKeepsTheResidual) {
+  const ShellMesh mesh = tyre_patch_mesh();
+  TestDrum drum(kDrumRadius);
+  FrictionOnly f = friction_only(mesh, drum, -1, law_of(FrictionLaw::Mode::coulomb), true, 0.05);
+  std::mt19937 rng(4711);
+  const Eigen::VectorXd u = random_state(mesh, rng, 0.2, 3.5, 5.0, lateral_push(0.05));
+  ASSERT_GT(count(f.form->plan(u)).slip, 0);
+  const Eigen::MatrixXd exact = f.tangent(u);
+  const Eigen::VectorXd r_exact = f.problem->system().residual();
+  f.form->set_jacobian_smoothing(0.0);
+  EXPECT_EQ((f.tangent(u) - exact).cwiseAbs().maxCoeff(), 0.0);
+  f.form->set_jacobian_smoothing(1e6);
+  const Eigen::MatrixXd smoothed = f.tangent(u);
+  EXPECT_EQ((f.problem->system().residual() - r_exact).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_GT((smoothed - exact).cwiseAbs().maxCoeff(), 1e-3 * exact.cwiseAbs().maxCoeff());
+}
+
 // The tangent is summed per pair of elements of a strip (forms/strip_blocks.hpp), in strip, line and
 // point order: bit for bit the same on one and two threads, in both modes (1D: drift 0, planar off).
 TEST(TreadFrictionPlanar, SameResultOnAnyThreadCount) {

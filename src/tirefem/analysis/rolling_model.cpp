@@ -17,6 +17,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 constexpr double kAngleStep = 0.02;  // largest first step in tan α (1.15°) and in γ (rad)
 constexpr int kEasyIterations = 6;   // a step that converged within this many Newton iterations doubles
+constexpr double kJacobianSmoothing = 0.1;  // TreadFrictionForm::set_jacobian_smoothing, see below
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // Points that may touch the support while rolling: the static patch's angular extent along the flow,
@@ -66,6 +67,13 @@ RollingModel::RollingModel(const TyreMesh& tm, const TyreDescription& tyre, cons
   const RollingStudy::TreadShear shear = study.tread_shear.value_or(
       tm.half_model ? RollingStudy::TreadShear::longitudinal : RollingStudy::TreadShear::planar);
   friction_->set_planar(shear == RollingStudy::TreadShear::planar);
+  // Planar friction: Newton's tangent of a point just past the friction limit blends in its stick tangent
+  // (the residual, hence every converged state, is unchanged). Measured on the 80 × 46 full model at
+  // 3700 N: α = 4° from free rolling failed after 436 Newton iterations (a few points along the lines
+  // flipping between stick and slip at every iterate, the residual cycling about 1e-3), and converges
+  // with it (63 iterations; α = 6° next, 236). On the 80 × 24 cornering bench it costs 171 instead of
+  // 155 iterations, 47 instead of 43 LUs.
+  friction_->set_jacobian_smoothing(kJacobianSmoothing);
   result.planar_shear = friction_->planar();
   forms.push_back(std::move(friction));
   problem_ = std::make_unique<NonlinearProblem>(std::move(dofs), std::move(forms));

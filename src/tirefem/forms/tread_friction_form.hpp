@@ -91,6 +91,12 @@ class TreadFrictionForm final : public Form {
   bool planar() const { return planar_; }
   // d: the support's displacement along +η per unit of its travel along ξ (planar mode only).
   void set_lateral_drift(double drift) { drift_ = drift; }
+  // Planar mode, Newton's direction only: a sliding point with |s| between L and (1 + band) L (L the
+  // friction-limited shear) gets a blend of its stick and slip tangents instead of the slip one. The
+  // residual stays exact; the tangent is not its derivative there. 0 (default): the exact tangent. Near
+  // the limit the exact tangent swings between stick and slip from one iterate to the next (a chain of
+  // points along a line re-sticking and sliding), and Newton cycles.
+  void set_jacobian_smoothing(double band) { jacobian_smoothing_ = band; }
   double lateral_drift() const { return drift_; }
 
   // The plan at u for a contact region (per point; empty: {g > 0} at u), by marching along each line
@@ -160,6 +166,7 @@ class TreadFrictionForm final : public Form {
   FrictionPlan frozen_;
   bool planar_ = false;
   double drift_ = 0.0;
+  double jacobian_smoothing_ = 0.0;
 };
 
 }  // namespace tirefem
