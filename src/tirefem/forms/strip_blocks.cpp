@@ -34,14 +34,13 @@ void StripBlocks::add_residual(int element, const Eigen::Vector4d& shape, const 
   for (int a = 0; a < 4; ++a) residuals_[k].segment<3>(3 * a) += shape[a] * residual;
 }
 
-bool StripBlocks::add_tangent(int row_element, const Eigen::Vector4d& row_shape, int column_element,
+void StripBlocks::add_tangent(int row_element, const Eigen::Vector4d& row_shape, int column_element,
                               const Eigen::Vector4d& column_shape, const Eigen::Matrix3d& block) {
   const int k = slot(row_element, column_element);
-  if (k < 0) return false;
+  if (k < 0) return;
   Eigen::Matrix<double, 12, 12>& t = tangents_[k];
   for (int a = 0; a < 4; ++a)
     for (int b = 0; b < 4; ++b) t.block<3, 3>(3 * a, 3 * b) += row_shape[a] * column_shape[b] * block;
-  return true;
 }
 
 void StripBlocks::flush(const ShellMesh& mesh, BlockBatch& batch, bool with_tangent) const {

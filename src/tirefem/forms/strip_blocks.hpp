@@ -36,8 +36,8 @@ class StripBlocks {
   // Residual of the row element's DOFs += Σ_a shape[a] · force at node a.
   void add_residual(int element, const Eigen::Vector4d& shape, const Eigen::Vector3d& residual);
   // Tangent (row element, column element) += row_shape ⊗ column_shape ⊗ block (3 × 3 per node pair).
-  // A pair the strip's slots do not hold is skipped: false.
-  bool add_tangent(int row_element, const Eigen::Vector4d& row_shape, int column_element,
+  // A pair the strip's slots do not hold is skipped (the caller's dependencies define the slots).
+  void add_tangent(int row_element, const Eigen::Vector4d& row_shape, int column_element,
                    const Eigen::Vector4d& column_shape, const Eigen::Matrix3d& block);
   // Moves the sums into the batch: per pair the row element's 12 outer-face DOFs, then the column
   // element's unless the same.

@@ -91,13 +91,13 @@ class TreadFrictionForm final : public Form {
   bool planar() const { return planar_; }
   // d: the support's displacement along +η per unit of its travel along ξ (planar mode only).
   void set_lateral_drift(double drift) { drift_ = drift; }
+  double lateral_drift() const { return drift_; }
   // Planar mode, Newton's direction only: a sliding point with |s| between L and (1 + band) L (L the
   // friction-limited shear) gets a blend of its stick and slip tangents instead of the slip one. The
   // residual stays exact; the tangent is not its derivative there. 0 (default): the exact tangent. Near
   // the limit the exact tangent swings between stick and slip from one iterate to the next (a chain of
   // points along a line re-sticking and sliding), and Newton cycles.
   void set_jacobian_smoothing(double band) { jacobian_smoothing_ = band; }
-  double lateral_drift() const { return drift_; }
 
   // The plan at u for a contact region (per point; empty: {g > 0} at u), by marching along each line
   // in the direction of the flow with the return mapping of eq. (15).
@@ -153,8 +153,9 @@ class TreadFrictionForm final : public Form {
   std::vector<TreadPoint> points_;
   std::vector<std::vector<int>> lines_;
   std::vector<int> line_position_;  // per point: its index in its line
-  // Lines through the same elements (a strip of elements: one line per Gauss row), in line order. The
-  // planar tangent couples the elements of a strip only: it is summed per pair of them.
+  // Lines through the same elements (a strip of elements: one line per Gauss row), in line order. A
+  // point's force depends on points of its own line only: the tangent is summed per pair of a strip's
+  // elements (forms/strip_blocks.hpp).
   std::vector<std::vector<int>> strips_;
   double kp_, shear_modulus_;
   const SupportSurface& support_;

@@ -256,14 +256,14 @@ int TreadFrictionForm::march_planar(int l, const FrictionPlan& plan, const Eigen
       // Smoothed Jacobian (set_jacobian_smoothing): just past the friction limit, the stick tangent
       // blended in, its weight falling linearly from 1 at |s| = L to 0 at |s| = (1 + band) L.
       const double w = jacobian_smoothing_ > 0.0 ? 1.0 - (norm / limit - 1.0) / jacobian_smoothing_ : 0.0;
-      if (w > 0.0) {
-        const double c = shear_modulus_ / p.height * p.weight;
-        Eigen::MatrixXd stick = c * frame * ds;
-        stick.middleCols<3>(column(i)) += c * (s.x() * dt + s.y() * db);
-        o.d_force = (1.0 - w) * o.d_force + w * stick;
-        Eigen::MatrixXd stick_row = ds;
-        stick_row.middleCols<3>(column(i)) += grad;
-        row = (1.0 - w) * row + w * stick_row;
+      if (w > 0.0) {  // (1 − w) slip + w stick, the stick tangent as in the stick branch above
+        const double c = w * shear_modulus_ / p.height * p.weight;
+        o.d_force *= 1.0 - w;
+        o.d_force.noalias() += c * frame * ds;
+        o.d_force.middleCols<3>(column(i)) += c * (s.x() * dt + s.y() * db);
+        row *= 1.0 - w;
+        row += w * ds;
+        row.middleCols<3>(column(i)) += w * grad;
       }
     }
   }
