@@ -159,6 +159,7 @@ RollingModel::Solved RollingModel::solve(const FrictionLaw& law, const WheelSlip
     previous_t = done;
     u = std::move(trial);
     done = t;
+    cutbacks = 0;  // the limit is on halvings in a row: a stage that converged is progress
     if (last.newton_iterations <= kEasyIterations) step *= 2.0;
     if (law.mode == FrictionLaw::Mode::coulomb) {
       known_.push_back({p, u});

@@ -25,6 +25,8 @@ constexpr double kPushSize = 0.05;
 constexpr int kMaxEscapes = 3;
 constexpr double kNegativeCurvature = 1e-10;
 constexpr double kMaxExtension = 16.0;  // at most this many times a shifted step along a falling energy
+constexpr double kConvergingResidual = 1e-3;  // see the iteration limit in solve()
+constexpr int kExtraIterations = 5;
 }  // namespace
 
 NewtonSolver::NewtonSolver(NonlinearProblem& problem, NewtonSettings settings)
@@ -159,7 +161,14 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
       out.final_shift = shift_;
       return out;
     }
-    if (it >= settings_.max_iterations) return out;
+    // A solve that is converging fast when it reaches its iteration limit (the residual fell more than
+    // tenfold in the last iteration and is below kConvergingResidual) is let finish, within
+    // kExtraIterations more: cutting it off throws the work away, and the caller then retries from
+    // scratch with a smaller step. Measured on the 80 × 46 full model, α 4° → 6°: a frozen-plan solve
+    // went 7e-5 → 1.1e-6 at its 25th iteration and was cut off; let finish, it reached 1.7e-8 at its 26th.
+    const bool converging = it > 0 && rn < 0.1 * previous_residual && out.relative_residual < kConvergingResidual;
+    if (it >= settings_.max_iterations && !(converging && it < settings_.max_iterations + kExtraIterations))
+      return out;
     // Diverging. Not when a stable state is sought on a potential: after leaving a saddle, the energy-checked
     // descent towards the buckled (wrinkled) state can raise the residual by orders of magnitude (the
     // coarse example mesh's inflated saddle: to 1e2 relative); max_iterations bounds it.

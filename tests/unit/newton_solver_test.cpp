@@ -1,0 +1,89 @@
+// NewtonSolver on one-equation problems whose Newton iterates are known: when it stops and why.
+#include <cmath>
+#include <functional>
+#include <memory>
+
+#include <gtest/gtest.h>
+
+#include "tirefem/solver/newton.hpp"
+
+namespace tirefem {
+namespace {
+
+// R(u) = f(u) on a single DOF (its load scale ‖R(0)‖ = |f(0)|), tangent f'(u).
+class ScalarForm : public Form {
+ public:
+  ScalarForm(std::function<double(double)> f, std::function<double(double)> df) : f_(std::move(f)), df_(std::move(df)) {}
+  void add_pattern(PatternBuilder& pattern) const override {
+    const int dof = 0;
+    pattern.add_block(std::span<const int>(&dof, 1));
+  }
+  void assemble(const FormInput& input, SparseSystem& system) const override {
+    const int dof = 0;
+    const Eigen::Matrix<double, 1, 1> r(f_(input.displacement[0])), k(df_(input.displacement[0]));
+    system.add(std::span<const int>(&dof, 1), r, k, input.with_tangent);
+  }
+
+ private:
+  std::function<double(double)> f_, df_;
+};
+
+NewtonOutcome solve_scalar(std::function<double(double)> f, std::function<double(double)> df, double start,
+                           int max_iterations, double& u_out) {
+  std::vector<std::unique_ptr<Form>> forms;
+  forms.push_back(std::make_unique<ScalarForm>(std::move(f), std::move(df)));
+  NonlinearProblem problem(DofMap(1), std::move(forms));
+  NewtonSettings settings;
+  settings.max_iterations = max_iterations;
+  NewtonSolver newton(problem, settings);
+  Eigen::VectorXd u(1);
+  u[0] = start;
+  const NewtonOutcome out = newton.solve(u, 1.0);
+  u_out = u[0];
+  return out;
+}
+
+// u³ = 1 from u = 10: Newton's steps shrink u by about a third while it is large, then converge
+// quadratically; it needs 10 iterations to a relative residual of 1e-8.
+TEST(NewtonSolver, ConvergesInTheIterationsItNeeds) {
+  double u = 0.0;
+  const NewtonOutcome out = solve_scalar([](double x) { return x * x * x - 1.0; },
+                                         [](double x) { return 3.0 * x * x; }, 10.0, 25, u);
+  ASSERT_TRUE(out.converged);
+  EXPECT_EQ(out.iterations, 10);
+  EXPECT_NEAR(u, 1.0, 1e-9);
+}
+
+// With a limit of 8 iterations the same solve is converging quadratically when it reaches the limit
+// (the residual falls more than tenfold per iteration and is below 1e-3): it is let finish.
+TEST(NewtonSolver, AConvergingSolveIsLetFinishPastItsLimit) {
+  double u = 0.0;
+  const NewtonOutcome out = solve_scalar([](double x) { return x * x * x - 1.0; },
+                                         [](double x) { return 3.0 * x * x; }, 10.0, 8, u);
+  ASSERT_TRUE(out.converged);
+  EXPECT_EQ(out.iterations, 10);
+  EXPECT_NEAR(u, 1.0, 1e-9);
+}
+
+// ... but not one still far from converged at the limit: at 5 iterations the residual is about 1.9
+// relative (u ≈ 1.43), so the solve fails there.
+TEST(NewtonSolver, ASolveFarFromConvergedStopsAtItsLimit) {
+  double u = 0.0;
+  const NewtonOutcome out = solve_scalar([](double x) { return x * x * x - 1.0; },
+                                         [](double x) { return 3.0 * x * x; }, 10.0, 5, u);
+  EXPECT_FALSE(out.converged);
+  EXPECT_EQ(out.iterations, 5);
+}
+
+// Newton on atan(u) − atan(0.5) from u = 5 overshoots further at every step (to −18.7, then beyond):
+// it is not let run on past its limit.
+TEST(NewtonSolver, ADivergingSolveFails) {
+  double u = 0.0;
+  const NewtonOutcome out = solve_scalar([](double x) { return std::atan(x) - std::atan(0.5); },
+                                         [](double x) { return 1.0 / (1.0 + x * x); }, 5.0, 25, u);
+  EXPECT_FALSE(out.converged);
+  EXPECT_LE(out.iterations, 25);
+}
+
+}  // namespace
+}  // namespace tirefem
