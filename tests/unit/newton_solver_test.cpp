@@ -45,10 +45,14 @@ NewtonOutcome solve_scalar(std::function<double(double)> f, std::function<double
 
 // u³ = 1 from u = 10: Newton's steps shrink u by about a third while it is large, then converge
 // quadratically; it needs 10 iterations to a relative residual of 1e-8.
+NewtonOutcome solve_cube_root_of_one(int max_iterations, double& u) {
+  return solve_scalar([](double x) { return x * x * x - 1.0; }, [](double x) { return 3.0 * x * x; }, 10.0,
+                      max_iterations, u);
+}
+
 TEST(NewtonSolver, ConvergesInTheIterationsItNeeds) {
   double u = 0.0;
-  const NewtonOutcome out = solve_scalar([](double x) { return x * x * x - 1.0; },
-                                         [](double x) { return 3.0 * x * x; }, 10.0, 25, u);
+  const NewtonOutcome out = solve_cube_root_of_one(25, u);
   ASSERT_TRUE(out.converged);
   EXPECT_EQ(out.iterations, 10);
   EXPECT_NEAR(u, 1.0, 1e-9);
@@ -58,8 +62,7 @@ TEST(NewtonSolver, ConvergesInTheIterationsItNeeds) {
 // (the residual falls more than tenfold per iteration and is below 1e-3): it is let finish.
 TEST(NewtonSolver, AConvergingSolveIsLetFinishPastItsLimit) {
   double u = 0.0;
-  const NewtonOutcome out = solve_scalar([](double x) { return x * x * x - 1.0; },
-                                         [](double x) { return 3.0 * x * x; }, 10.0, 8, u);
+  const NewtonOutcome out = solve_cube_root_of_one(8, u);
   ASSERT_TRUE(out.converged);
   EXPECT_EQ(out.iterations, 10);
   EXPECT_NEAR(u, 1.0, 1e-9);
@@ -69,8 +72,7 @@ TEST(NewtonSolver, AConvergingSolveIsLetFinishPastItsLimit) {
 // relative (u ≈ 1.43), so the solve fails there.
 TEST(NewtonSolver, ASolveFarFromConvergedStopsAtItsLimit) {
   double u = 0.0;
-  const NewtonOutcome out = solve_scalar([](double x) { return x * x * x - 1.0; },
-                                         [](double x) { return 3.0 * x * x; }, 10.0, 5, u);
+  const NewtonOutcome out = solve_cube_root_of_one(5, u);
   EXPECT_FALSE(out.converged);
   EXPECT_EQ(out.iterations, 5);
 }
