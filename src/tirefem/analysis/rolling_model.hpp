@@ -81,6 +81,9 @@ class RollingModel {
   std::unique_ptr<NonlinearProblem> problem_;
   std::unique_ptr<NewtonSolver> newton_;
   Eigen::VectorXd base_;  // the static footprint
+  // du/dδz of the last converged δz step of hold_load, and the parameters of the state it started from.
+  Eigen::VectorXd deflection_rate_;
+  Parameters deflection_rate_at_ = Parameters::Zero();
   double deflection_ = 0.0;
   std::vector<Known> known_;
 };
