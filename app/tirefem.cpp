@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <string>
 
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
@@ -21,11 +23,15 @@ namespace {
 enum ExitCode { kDone = 0, kBadInput = 1, kStoppedShort = 2, kInterrupted = 3, kRunFailed = 4 };
 
 // Set by SIGINT/SIGTERM/SIGHUP; the run polls it between solver steps. A second signal ends the process
-// at once (the next run removes its temporary folder).
+// at once (the next run removes its temporary folder). The user is told so at once: a step of a large
+// model can take minutes (write(2) is safe in a signal handler, stdio is not).
 std::atomic<bool> stop_signal{false};
+constexpr char kStopMessage[] =
+    "tirefem: stopping after the current solver step, without writing results (signal again to stop at once)\n";
 extern "C" void on_stop_signal(int sig) {
   stop_signal = true;
   std::signal(sig, SIG_DFL);
+  [[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, kStopMessage, sizeof kStopMessage - 1);
 }
 
 int error(int code, const std::string& message) {

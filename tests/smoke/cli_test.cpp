@@ -419,6 +419,8 @@ TEST(CliOutputFolder, InterruptCleansUpAndExitsWith3) {
   const CliRun r = run_cli_command(script);
   EXPECT_NE(r.output.find("exit=3"), std::string::npos) << r.output << read_text(work / "log.txt");
   EXPECT_NE(read_text(work / "log.txt").find("interrupted"), std::string::npos);
+  EXPECT_NE(read_text(work / "log.txt").find("stopping after the current solver step"), std::string::npos)
+      << "the signal is acknowledged at once";
   EXPECT_FALSE(fs::exists(work / "res"));
   EXPECT_FALSE(has_hidden_leftovers(work)) << "the temporary folder was left behind";
   fs::remove_all(work);

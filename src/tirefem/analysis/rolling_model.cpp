@@ -190,7 +190,7 @@ void RollingModel::hold_load(Solved& s, double target, double tolerance, double 
   while (steps < 8 && s.converged && std::abs(q0 - target) > tolerance * target) {
     const double d1 = d0 + (target - q0) / slope * std::pow(0.5, cutbacks);
     set_deflection(d1);
-    // Predicted along du/dδz of the last δz step held at a state within kRateReach in (1/Rk, tan α, γ):
+    // Predicted along du/dδz of the last δz step held at a state within kRateReach in (R/Rk, tan α, γ), R the axle height:
     // without it the patch's newly touching edge starts the solve far off. Measured on the 80 × 24 full
     // model, α sweep 0 … 12° at 3700 N held: its δz steps took 81 Newton iterations (30 at 4° alone)
     // against 38, the sweep 200 against 117 (99 s against 51 s), the forces within 0.7% (the friction
