@@ -190,18 +190,17 @@ void RollingModel::hold_load(Solved& s, double target, double tolerance, double 
   while (steps < 8 && s.converged && std::abs(q0 - target) > tolerance * target) {
     const double d1 = d0 + (target - q0) / slope * std::pow(0.5, cutbacks);
     set_deflection(d1);
-    // Predicted along du/dδz of the last δz step held at a state within kRateReach in (R/Rk, tan α, γ), R the axle height:
-    // without it the patch's newly touching edge starts the solve far off. Measured on the 80 × 24 full
-    // model, α sweep 0 … 12° at 3700 N held: its δz steps took 81 Newton iterations (30 at 4° alone)
-    // against 38, the sweep 200 against 117 (99 s against 51 s), the forces within 0.7% (the friction
-    // problem's states are path-dependent at that level).
+    // Predicted along du/dδz of the last δz step, if it was held at a state within kRateReach in
+    // (R/Rk, tan α, γ), R the axle height: without it the patch's newly touching edge starts the solve
+    // far off. Measured on the 80 × 24 full model, α sweep 0 … 12° at 3700 N held: its δz steps took 81
+    // Newton iterations (30 at 4° alone) against 38, the sweep 200 against 117 (99 s against 51 s), the
+    // forces within 0.7% (the friction problem's states are path-dependent at that level).
     Eigen::VectorXd u = s.u;
     if (deflection_rate_.size() == u.size() &&
         (deflection_rate_at_.head<3>() - s.parameters.head<3>()).norm() <= kRateReach)
       u += (d1 - d0) * deflection_rate_;
     const ContactSolveOutcome o = solve_rolling_state(*newton_, *contact_, *friction_, u, settings_);
     ++s.counts.solves;
-    if (o.converged) deflection_rate_ = (u - s.u) / (d1 - d0), deflection_rate_at_ = s.parameters;
     if (!o.converged) {
       // A smaller change of δz from the last converged state (measured: the first δz step of a
       // cornering state at α = 2° diverged where its halves converge).
@@ -215,6 +214,8 @@ void RollingModel::hold_load(Solved& s, double target, double tolerance, double 
     }
     cutbacks = 0;
     ++steps;
+    deflection_rate_ = (u - s.u) / (d1 - d0);
+    deflection_rate_at_ = s.parameters;
     s.u = std::move(u);
     s.figures = figures(s.u);
     if (s.figures.Qz_N != q0) slope = (s.figures.Qz_N - q0) / (d1 - d0);
