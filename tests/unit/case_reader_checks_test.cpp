@@ -266,6 +266,8 @@ TEST(CaseReaderChecks, PlausibilityBounds) {
                   "contact.max_contact_iterations: must be ≤ 1000 (got 1000000)");
   EXPECT_CONTAINS(error_of(tyre_with("[contact]\nmax_newton_iterations = 1001\n")),
                   "contact.max_newton_iterations: must be ≤ 1000 (got 1001)");
+  EXPECT_CONTAINS(error_of(tyre_with("[contact]\nmax_state_iterations = 0\n")),
+                  "contact.max_state_iterations: must be ≥ 1 (got 0)");
   EXPECT_CONTAINS(error_of(edited("max_newton_iterations = 25\nresidual_tolerance = 1e-8      # Newton",
                                   "max_newton_iterations = 5000\nresidual_tolerance = 1e-8      # Newton")),
                   "inflation.max_newton_iterations: must be ≤ 1000 (got 5000)");

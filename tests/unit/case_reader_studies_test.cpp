@@ -23,6 +23,7 @@ TEST(CaseReaderStudies, ReadsTheExampleStudies) {
   EXPECT_EQ(c.contact.max_contact_iterations, 30);
   EXPECT_EQ(c.contact.region_tolerance, 0);
   EXPECT_EQ(c.contact.max_newton_iterations, 25);
+  EXPECT_EQ(c.contact.max_state_iterations, 250);  // the default
   EXPECT_EQ(c.contact.residual_tolerance, 1e-8);
 
   ASSERT_EQ(c.load_curves.size(), 3u);

@@ -195,5 +195,32 @@ TEST(Cornering, StraightAheadTheFullModelReproducesTheHalfModel) {
               1e-4 * named(half, "traction").figures.Qz_N);
 }
 
+// A rolling state's effort is bounded (ContactSettings::max_state_iterations): one that cannot be reached
+// within it is reported as not converged, with the reason, after at most the bound plus one solve per
+// start state (the neighbour's path, then free rolling's). Here α = 10° with a bound of 5 Newton
+// iterations, fewer than its first stage alone needs.
+TEST(Cornering, AStateGivesUpWithinItsIterationBound) {
+  RollingStudy s;
+  s.name = "bounded";
+  s.target_load = 3000.0;
+  s.friction = 0.7;
+  s.tread_shear = RollingStudy::TreadShear::planar;
+  using K = RollingStateSpec::Kind;
+  s.states = {state(K::free, 0.0, 0.0, "free"), state(K::given_slip, 0.0, 10.0, "alpha+10")};
+  ContactSettings cs = settings();
+  cs.max_state_iterations = 5;
+  const Case& c = example_case();
+  const RollingResult r = run_rolling(tyre(false), c.tyre, c.inflation, cs, s);
+  ASSERT_EQ(r.states.size(), 2u);
+  ASSERT_TRUE(r.states[0].converged) << r.states[0].failure;
+  const RollingStateResult& bounded = r.states[1];
+  std::printf("  α = 10° with at most 5 Newton iterations: %d, '%s'\n", bounded.counts.newton_iterations,
+              bounded.failure.c_str());
+  EXPECT_FALSE(bounded.converged);
+  EXPECT_NE(bounded.failure.find("gave up after"), std::string::npos) << bounded.failure;
+  // Per start state: the bound, then at most one more solve (max_newton_iterations + 5 when converging fast).
+  EXPECT_LE(bounded.counts.newton_iterations, 2 * (5 + cs.max_newton_iterations + 5));
+}
+
 }  // namespace
 }  // namespace tirefem::verification

@@ -36,6 +36,7 @@ class RollingModel {
     Eigen::VectorXd u;
     Eigen::Vector4d parameters = Eigen::Vector4d::Zero();  // of the state (see Parameters below)
     bool continued = false;  // a Coulomb state: kept for later states to start from and predict with
+    bool restarted = false;  // reached from free rolling after the continuation from a neighbour failed
   };
 
   // Solves with the given law at the given slip. Coulomb and full stick: from the nearest converged
@@ -66,6 +67,15 @@ class RollingModel {
     Eigen::VectorXd u;
   };
   Parameters parameters(const WheelSlip& slip) const;
+  // One continuation to `target` from known_[from_index] (−1: the static footprint), in stages with
+  // halving cut-back, within ContactSettings::max_state_iterations; counts its nonlinear solves.
+  struct Attempt {
+    bool converged = false;
+    std::string failure;
+    Eigen::VectorXd u;
+    ContactSolveOutcome last;  // of the last stage
+  };
+  Attempt continuation(const FrictionLaw& law, const Parameters& target, int from_index, int& solves);
   void apply(const Parameters& parameters);
   const Known* nearest(const Parameters& p, const Known* other = nullptr) const;
   // `path`: indices in known_ of the continuation under way (its start state, then its stages).

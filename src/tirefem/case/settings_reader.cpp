@@ -20,7 +20,7 @@ ContactSettings read_contact(TomlFields& f, const toml::node& n, const std::stri
   const toml::table& t = f.table(n, path,
                                  {"quadrature", "iteration", "max_contact_iterations", "region_tolerance",
                                   "max_newton_iterations", "residual_tolerance", "provisional_tolerance",
-                                  "reuse_factorizations", "equilibrium"});
+                                  "reuse_factorizations", "equilibrium", "max_state_iterations"});
   ContactSettings s;
   f.opt_integer(t, path, "quadrature", s.quadrature);
   if (const toml::node* v = f.get(t, path, "iteration"))
@@ -29,6 +29,7 @@ ContactSettings read_contact(TomlFields& f, const toml::node& n, const std::stri
   f.opt_integer(t, path, "max_contact_iterations", s.max_contact_iterations);
   f.opt_integer(t, path, "region_tolerance", s.region_tolerance);
   f.opt_integer(t, path, "max_newton_iterations", s.max_newton_iterations);
+  f.opt_integer(t, path, "max_state_iterations", s.max_state_iterations);
   f.opt_number(t, path, "residual_tolerance", s.residual_tolerance, "");
   f.opt_number(t, path, "provisional_tolerance", s.provisional_tolerance, "");
   f.opt_bool(t, path, "reuse_factorizations", s.reuse_factorizations);
@@ -56,6 +57,8 @@ void check_contact(const FieldChecker& c, const ContactSettings& s, const std::s
   c.at_least(s.region_tolerance, 0, join(path, "region_tolerance"));
   c.at_least(s.max_newton_iterations, 1, join(path, "max_newton_iterations"));
   c.at_most(s.max_newton_iterations, kMaxIterations, join(path, "max_newton_iterations"));
+  c.at_least(s.max_state_iterations, 1, join(path, "max_state_iterations"));
+  c.at_most(s.max_state_iterations, 100 * kMaxIterations, join(path, "max_state_iterations"));
   c.positive(s.residual_tolerance, join(path, "residual_tolerance"));
   c.positive(s.provisional_tolerance, join(path, "provisional_tolerance"));
 }
