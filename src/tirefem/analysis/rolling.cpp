@@ -150,10 +150,9 @@ bool run_sweep(RollingModel& model, const RollingStudy& study, RollingResult& r,
     out.push_back({t.slip, t.alpha_deg, t.gamma_deg, rk, model.deflection(), s.figures, s.counts});
     if (progress)
       progress(fmt::format("  {}: Fx {:+8.1f} N, Fy {:+8.1f} N, Mz {:+9.0f} N·mm, Qz {:.1f} N, stick {:3.0f}% ({} "
-                           "Newton iterations, {:.2f} s{})",
+                           "Newton iterations, {:.2f} s)",
                            label, s.figures.Fx_N, s.figures.Fy_N, s.figures.aligning_moment_Nmm, s.figures.Qz_N,
-                           100 * s.figures.stick_area_fraction, s.counts.newton_iterations, s.counts.time_s,
-                           s.restarted ? "; from free rolling, the path from its neighbour failed" : ""));
+                           100 * s.figures.stick_area_fraction, s.counts.newton_iterations, s.counts.time_s));
     if (point_done) point_done();
   }
   return ok;
@@ -333,14 +332,13 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
     if (progress) {
       if (s.converged)
         progress(fmt::format("  {}: Qy {:+.1f} N, Qz {:.1f} N, Mx {:+.0f} N·mm{}, stick {:.0f}% ({} Newton "
-                             "iterations, {} factorisations, {:.2f} s{})",
+                             "iterations, {} factorisations, {:.2f} s)",
                              state.name, s.figures.Qy_N, s.figures.Qz_N, s.figures.Mx_Nmm,
                              cornering ? fmt::format(", Fy {:+.1f} N, Mz {:+.0f} N·mm", s.figures.Fy_N,
                                                      s.figures.aligning_moment_Nmm)
                                        : "",
                              100 * s.figures.stick_area_fraction, s.counts.newton_iterations,
-                             s.counts.factorizations, s.counts.time_s,
-                             s.restarted ? "; from free rolling, the path from its neighbour failed" : ""));
+                             s.counts.factorizations, s.counts.time_s));
       else
         progress(fmt::format("  {}: did not converge: {}", state.name, s.failure));
     }

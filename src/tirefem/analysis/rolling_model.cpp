@@ -116,17 +116,10 @@ RollingModel::Solved RollingModel::solve(const FrictionLaw& law, const WheelSlip
   const Parameters target = parameters(slip);
   const Known* from = full_slip ? nullptr : from_last && !known_.empty() ? &known_.back() : nearest(target);
   const int from_index = from ? static_cast<int>(from - known_.data()) : -1;
+  // Bounded by contact.max_state_iterations. (A second attempt from free rolling after a failed one from
+  // the neighbour, tried on 80 × 46 full at α = 4° with Qz held, failed as well and doubled the time to
+  // the failure: docs/studies/planar-friction-newton.md, fifth look.)
   Attempt a = continuation(law, target, from_index, s.counts.solves);
-  // The states of the friction problem depend on the path to them, and so does whether Newton reaches
-  // them: on the 80 × 46 full model at 3700 N, α = 4° was reached from free rolling but not from the
-  // converged 3° state (docs/studies/planar-friction-newton.md). A continuation from a neighbour that
-  // fails is therefore tried once more from the first state solved (free rolling).
-  if (!a.converged && from_index > 0) {
-    const std::string first_failure = a.failure;
-    a = continuation(law, target, 0, s.counts.solves);
-    if (a.converged) s.restarted = true;
-    else a.failure = fmt::format("{}; again from free rolling: {}", first_failure, a.failure);
-  }
   s.converged = a.converged;
   s.failure = a.failure;
   s.parameters = target;

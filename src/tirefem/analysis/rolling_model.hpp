@@ -36,7 +36,6 @@ class RollingModel {
     Eigen::VectorXd u;
     Eigen::Vector4d parameters = Eigen::Vector4d::Zero();  // of the state (see Parameters below)
     bool continued = false;  // a Coulomb state: kept for later states to start from and predict with
-    bool restarted = false;  // reached from free rolling after the continuation from a neighbour failed
   };
 
   // Solves with the given law at the given slip. Coulomb and full stick: from the nearest converged
