@@ -195,10 +195,11 @@ TEST(Cornering, StraightAheadTheFullModelReproducesTheHalfModel) {
               1e-4 * named(half, "traction").figures.Qz_N);
 }
 
-// A rolling state's effort is bounded (ContactSettings::max_state_iterations): one that cannot be reached
-// within it is reported as not converged, with the reason, after at most the bound plus one more solve
-// (max_newton_iterations, + 5 when converging fast). Here α = 10° with a bound of 5 Newton iterations,
-// fewer than its first stage alone needs.
+// A rolling state's effort is bounded (ContactSettings::max_state_iterations): the bound is checked before
+// each stage, so one that cannot be reached within it is reported as not converged, with the reason, once
+// the stage under way ends. Here α = 10° with a bound of 5 Newton iterations, fewer than its first stage
+// alone needs; that stage is expected to end within one Newton solve's limit (max_newton_iterations,
+// + 5 when converging fast).
 TEST(Cornering, AStateGivesUpWithinItsIterationBound) {
   RollingStudy s;
   s.name = "bounded";

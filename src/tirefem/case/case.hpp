@@ -107,8 +107,8 @@ struct ContactSettings {
   int max_contact_iterations = 30;  // outer loop
   int region_tolerance = 0;         // the region is settled when at most this many points changed
   int max_newton_iterations = 25;   // inner loop (per outer iteration)
-  // Rolling: a state's continuation (its stages, failed ones included) gives up after this many Newton
-  // iterations in all, per start state (RollingModel::solve tries the neighbour, then free rolling).
+  // Rolling: a state's continuation from its start state (its stages, failed ones included) gives up
+  // after this many Newton iterations in all (RollingModel::continuation).
   int max_state_iterations = 250;
   double residual_tolerance = 1e-8; // Newton: ‖R‖ relative to the size of the inflation load
   // Two-level: Newton tolerance while the region is still changing; the final solve (region settled)
