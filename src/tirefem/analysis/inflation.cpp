@@ -55,6 +55,8 @@ void add_counters(SolveCounters& c, const NewtonSolver& newton, const NonlinearP
   c.krylov_iterations += l.krylov_iterations;
   c.krylov_s += l.krylov_s;
   c.factor_flops = std::max(c.factor_flops, l.factor_flops);
+  c.factor_nonzeros = std::max(c.factor_nonzeros, l.factor_nonzeros);
+  c.solves += l.solves;
   c.assemblies += problem.stats().assemblies;
   c.assembly_s += problem.stats().assembly_s;
 }

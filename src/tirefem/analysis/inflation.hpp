@@ -28,6 +28,8 @@ struct SolveCounters {
   int krylov_iterations = 0;
   double krylov_s = 0.0;
   double factor_flops = 0.0;  // of one Cholesky factorisation (0: none done)
+  double factor_nonzeros = 0.0;  // in its factor L
+  int solves = 0;                // triangular solves (forward and backward), GMRES's included
 };
 
 // Adds the work of a Newton solver and its problem (iterations, factorisations, times) to c.
