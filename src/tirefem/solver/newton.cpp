@@ -49,6 +49,7 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
   double slope = 0.0, step_shift = 0.0;
   bool pending = false;
   bool restart = false;  // the last iteration pushed u off a saddle: the next step is a first step
+  bool near_tested = false, near_stable = false;  // see near_test below
   for (int it = 0;; ++it) {
     problem_.evaluate(u, load_factor, true);
     Eigen::VectorXd r = dofs.gather(problem_.system().residual());
@@ -141,7 +142,8 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
       // prediction kept the symmetry of the state, so the exact steps never felt the unstable mode)
       // push off along the direction of negative curvature, to the side that lowers the energy, and
       // go on descending.
-      if (settings_.stable_equilibrium && potential && inertia_corrected_ && !settings_.known_stable) {
+      // (A positive definite tangent near the solution has already told: the state is stable.)
+      if (settings_.stable_equilibrium && potential && inertia_corrected_ && !settings_.known_stable && !near_stable) {
         shift_ = linear_.factorize_inertia_corrected(problem_.system().tangent(), true);
         if (shift_ > 0 && out.escapes < kMaxEscapes && push_off_saddle(u, load_factor)) {
           ++out.escapes;
@@ -188,7 +190,23 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
       eta = std::max(eta, std::min(eta_max, 0.1 * settings_.residual_tolerance * reference / rn));
     }
     previous_residual = rn;
-    if (!solve_linear(-r, du, fresh, eta)) return out;
+    // Near the solution (stable mode with reused factorisations): factorise this iterate's tangent once.
+    // Its inertia tells the converged state's stability (the final test is then spared when it is
+    // positive definite), and the last iterations' GMRES runs on a factorisation of nearly their own
+    // tangent.
+    const bool near_test = settings_.reuse_factorization && inertia_corrected_ && settings_.stable_equilibrium &&
+                           potential && !settings_.known_stable && !near_tested && it > 0 && !lu_mode_ &&
+                           out.relative_residual <= settings_.near_solution_residual;
+    if (near_test) {
+      near_tested = true;
+      near_stable = linear_.factorize_cholesky(problem_.system().tangent(), 0.0);
+      if (near_stable) shift_ = 0.0;
+    }
+    if (near_test && near_stable) {
+      du = linear_.solve(-r);
+      if (!du.allFinite()) return out;
+    } else if (!solve_linear(-r, du, fresh, eta)) return out;
+    if (shift_ > 0 || lu_mode_) near_stable = false;  // a later tangent was indefinite: test the end state
     out.final_shift = shift_;
     // Line search on ‖R‖ (problems without a potential, when enabled): far from the solution (an
     // unstressed membrane under follower pressure) a full step can overshoot by orders of magnitude.

@@ -56,6 +56,12 @@ struct NewtonSettings {
   // with contact springs): the converged states need no stability test.
   bool known_stable = false;
   int max_energy_backtracks = 12;
+  // Stable equilibrium with reused factorisations: the tangent of the first iterate whose relative residual
+  // is below this is factorised (Cholesky, no shift). Positive definite, it stands for the converged state's
+  // (whose own factorisation, the stability test, is then spared) and preconditions the last iterations.
+  // Measured on the example's plane load curve (20 points, 120 × 46): GMRES iterations 746 → 456,
+  // factorisations 53 → 65 (failed attempts next to the instability), 46.2 → 41.7 s, the same states.
+  double near_solution_residual = 1e-2;
   double armijo = 1e-4;
 };
 
