@@ -15,6 +15,7 @@
 #include "tirefem/magic_formula/evaluator.hpp"
 #include "tirefem/magic_formula/rig_fit.hpp"
 #include "tirefem/magic_formula/tir_reader.hpp"
+#include "tirefem/magic_formula/vertical_fit.hpp"
 
 namespace tirefem {
 namespace {
@@ -109,6 +110,29 @@ TEST(MagicFormulaRigFit, RecoversTheCoefficientsFromTheRigTable) {
         {c.VERTICAL_STIFFNESS, exact.VERTICAL_STIFFNESS, "VERTICAL_STIFFNESS"}, {c.BREFF, exact.BREFF, "BREFF"},
         {c.DREFF, exact.DREFF, "DREFF"}, {c.FREFF, exact.FREFF, "FREFF"}})
     EXPECT_LE(std::abs(fitted - expected), 1e-6 * std::abs(expected)) << name << " " << fitted << " vs " << expected;
+}
+
+// Three loads whose fall of Re is a constant plus a line in Fz (what the example's quick rig gives, near
+// enough): no finite BREFF fits it exactly, and unbounded the fit ran BREFF off to 1e10-1e12, a step in Re
+// at zero load. Bounded, BREFF ends at 100, and Re is fitted to 0.08% of its largest fall from R0 (5.5 µm
+// of 7.1 mm: atan(100 rho) falls short of π/2 by 0.02 at rho = 0.5).
+TEST(MagicFormulaRigFit, TheEffectiveRadiusFitKeepsBreffBounded) {
+  MagicFormulaCoefficients c = truth();
+  const double R0 = c.UNLOADED_RADIUS, Fz0 = c.FNOMIN, Cz = c.VERTICAL_STIFFNESS;
+  std::vector<RollingRadiusPoint> points;
+  for (const double load : {0.5, 1.0, 1.5}) {
+    const double fall = Fz0 / Cz * (0.25 + 0.05 * load);  // (R0 - Re) Cz/FNOMIN = 0.25 + 0.05 rho
+    points.push_back({load * Fz0, R0 - fall});
+  }
+  std::vector<std::string> not_determined;
+  const ChannelFitError e = fit_effective_rolling_radius(points, c, not_determined);
+  std::printf("BREFF %.6g DREFF %.6g FREFF %.6g, Re rms %.3g m (%.3g of its fall)\n", c.BREFF, c.DREFF, c.FREFF,
+              e.rms, e.relative_rms);
+  EXPECT_GE(c.BREFF, 0.1);
+  EXPECT_LE(c.BREFF, 100.0 * (1 + 1e-12));
+  EXPECT_LT(e.relative_rms, 2e-3);
+  for (const RollingRadiusPoint& p : points)
+    EXPECT_NEAR(effective_rolling_radius(c, p.Fz), p.effective_radius, 2e-3 * (R0 - p.effective_radius));
 }
 
 TEST(MagicFormulaRigFit, RejectsAMissingNominalLoad) {

@@ -28,6 +28,20 @@ ChannelFitError channel_error(const char* channel, const std::vector<double>& re
   return e;
 }
 
+// BREFF is kept within [kMinBreff, kMaxBreff]. Beyond 100, atan(BREFF rho) is within 2% of π/2 at any rig
+// load above half the nominal one, so the data cannot tell it from a constant. With three loads the
+// unbounded fit then ran BREFF off to 1e10–1e12 (the example's quick rig), which is a step in Re at
+// Fz = 0 that no tyre has. Published passenger-tyre files have 7–10.
+constexpr double kMinBreff = 0.1, kMaxBreff = 100.0;
+double breff_of(double v) {  // the bounded parameter: v ∈ ℝ → [kMinBreff, kMaxBreff], smoothly
+  const double lo = std::log(kMinBreff), hi = std::log(kMaxBreff);
+  return std::exp(lo + 0.5 * (hi - lo) * (1.0 + std::tanh(v)));
+}
+double v_of_breff(double breff) {  // its inverse, kept off the saturated ends
+  const double lo = std::log(kMinBreff), hi = std::log(kMaxBreff);
+  return std::atanh(std::clamp(2.0 * (std::log(breff) - lo) / (hi - lo) - 1.0, -0.99, 0.99));
+}
+
 // (R0 - Re) Cz/FNOMIN = DREFF atan(BREFF rho) + FREFF rho, rho = Fz/FNOMIN.
 struct RadiusResidual {
   using Scalar = double;
@@ -39,9 +53,9 @@ struct RadiusResidual {
   const std::vector<double>* y;
   int inputs() const { return 3; }
   int values() const { return static_cast<int>(rho->size()); }
-  int operator()(const Eigen::VectorXd& u, Eigen::VectorXd& r) const {  // u = (log BREFF, DREFF, FREFF)
+  int operator()(const Eigen::VectorXd& u, Eigen::VectorXd& r) const {  // u = (v of BREFF, DREFF, FREFF)
     for (std::size_t i = 0; i < rho->size(); ++i)
-      r[static_cast<Eigen::Index>(i)] = u[1] * std::atan(std::exp(u[0]) * (*rho)[i]) + u[2] * (*rho)[i] - (*y)[i];
+      r[static_cast<Eigen::Index>(i)] = u[1] * std::atan(breff_of(u[0]) * (*rho)[i]) + u[2] * (*rho)[i] - (*y)[i];
     return 0;
   }
 };
@@ -116,7 +130,7 @@ ChannelFitError fit_effective_rolling_radius(std::span<const RollingRadiusPoint>
     };
     double best_B = 1, best = INFINITY;
     for (int i = 0; i <= 90; ++i) {
-      const double B = 0.1 * std::pow(10.0, i / 30.0);
+      const double B = kMinBreff * std::pow(kMaxBreff / kMinBreff, i / 90.0);
       double residual = 0;
       linear_part(B, residual);
       if (residual < best) best = residual, best_B = B;
@@ -129,9 +143,9 @@ ChannelFitError fit_effective_rolling_radius(std::span<const RollingRadiusPoint>
     lm.parameters.ftol = lm.parameters.xtol = 1e-15;
     lm.parameters.maxfev = 2000;
     Eigen::VectorXd u(3);
-    u << std::log(best_B), DF[0], DF[1];
+    u << v_of_breff(best_B), DF[0], DF[1];
     lm.minimize(u);
-    c.BREFF = std::exp(u[0]);
+    c.BREFF = breff_of(u[0]);
     c.DREFF = u[1];
     c.FREFF = u[2];
   }

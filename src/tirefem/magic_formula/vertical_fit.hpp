@@ -12,7 +12,8 @@
 // book writes Cz rho/Fz0 for Fz/Fz0, the same for a linear spring):
 // Re = R0 Q_RE0 - (FNOMIN/Cz)(DREFF atan(BREFF Fz/FNOMIN) + FREFF Fz/FNOMIN), Q_RE0 = 1, Cz the
 // VERTICAL_STIFFNESS already in the coefficients. DREFF and FREFF enter linearly: BREFF is first chosen on
-// a logarithmic grid (0.1..100) with DREFF, FREFF solved linearly, then all three by Levenberg-Marquardt.
+// a logarithmic grid (0.1..100) with DREFF, FREFF solved linearly, then all three by Levenberg-Marquardt,
+// BREFF kept within the grid's range (beyond 100 the rig's loads cannot tell atan(BREFF rho) from π/2).
 // Needs 3 distinct loads (2: FREFF only, BREFF = DREFF = 0).
 #include <span>
 #include <vector>
