@@ -37,6 +37,9 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
   const DofMap& dofs = problem_.dofs();
   const double reference = std::max(std::abs(load_factor), 1e-12) * problem_.load_scale();
   const bool potential = problem_.has_potential();
+  // A stable equilibrium is sought and this solve must tell whether the converged state is one.
+  const bool tests_stability =
+      settings_.stable_equilibrium && potential && inertia_corrected_ && !settings_.known_stable;
   NewtonOutcome out;
   out.final_shift = shift_;
   double increment_norm = 0.0;
@@ -143,7 +146,7 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
       // push off along the direction of negative curvature, to the side that lowers the energy, and
       // go on descending.
       // (A positive definite tangent near the solution has already told: the state is stable.)
-      if (settings_.stable_equilibrium && potential && inertia_corrected_ && !settings_.known_stable && !near_stable) {
+      if (tests_stability && !near_stable) {
         shift_ = linear_.factorize_inertia_corrected(problem_.system().tangent(), true);
         if (shift_ > 0 && out.escapes < kMaxEscapes && push_off_saddle(u, load_factor)) {
           ++out.escapes;
@@ -194,15 +197,14 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
     // Its inertia tells the converged state's stability (the final test is then spared when it is
     // positive definite), and the last iterations' GMRES runs on a factorisation of nearly their own
     // tangent.
-    const bool near_test = settings_.reuse_factorization && inertia_corrected_ && settings_.stable_equilibrium &&
-                           potential && !settings_.known_stable && !near_tested && it > 0 && !lu_mode_ &&
-                           out.relative_residual <= settings_.near_solution_residual;
-    if (near_test) {
+    bool factorised_here = false;
+    if (tests_stability && settings_.reuse_factorization && !near_tested && it > 0 && !lu_mode_ &&
+        out.relative_residual <= settings_.near_solution_residual) {
       near_tested = true;
-      near_stable = linear_.factorize_cholesky(problem_.system().tangent(), 0.0);
-      if (near_stable) shift_ = 0.0;
+      near_stable = factorised_here = linear_.factorize_cholesky(problem_.system().tangent(), 0.0);
     }
-    if (near_test && near_stable) {
+    if (factorised_here) {
+      shift_ = 0.0;
       du = linear_.solve(-r);
       if (!du.allFinite()) return out;
     } else if (!solve_linear(-r, du, fresh, eta)) return out;
