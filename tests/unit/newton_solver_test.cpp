@@ -1,4 +1,5 @@
 // NewtonSolver on one-equation problems whose Newton iterates are known: when it stops and why.
+#include <array>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -152,6 +153,69 @@ TEST(NewtonSolver, ATangentFactorisedNearTheSolutionStandsForTheStabilityTest) {
   const double root = solve_double_well(2.0, 1e-2).u;  // the minimum on the right
   EXPECT_GT(root, 1.0);
   EXPECT_NEAR(root * root * root - root - 0.1, 0.0, 1e-9);
+}
+
+// Π(x, y) = x⁴/4 − x + y⁴/4 + (1/2 − x²) y²/2: R = (x³ − 1 − x y², y³ + (1/2 − x²) y), K =
+// [[3x² − y², −2xy], [−2xy, 3y² + 1/2 − x²]], on the DOFs p = (x + y)/√2, q = (x − y)/√2 (so that the
+// unstable mode is not a diagonal entry of K, as in a shell). Along p = q (y = 0, where R_y = 0: a
+// symmetric state) Newton converges to the saddle (1, 0), stable only while x² < 1/2 (at x = 1: K's
+// diagonal 1.25, eigenvalues 3 and −0.5, a relative shift σ > 0.4 makes it positive definite). The
+// stable states are (x, ±y) with x³ − x y² = 1, y² = x² − 1/2.
+class PitchforkForm : public Form {
+ public:
+  void add_pattern(PatternBuilder& pattern) const override { pattern.add_block(kDofs); }
+  void assemble(const FormInput& input, SparseSystem& system) const override {
+    const Eigen::Vector2d xy = kRotation * Eigen::Vector2d(input.displacement[0], input.displacement[1]);
+    const double x = xy[0], y = xy[1];
+    const Eigen::Vector2d r(x * x * x - 1.0 - x * y * y, y * y * y + (0.5 - x * x) * y);
+    Eigen::Matrix2d k;
+    k << 3.0 * x * x - y * y, -2.0 * x * y, -2.0 * x * y, 3.0 * y * y + 0.5 - x * x;
+    const Eigen::Vector2d r_pq = kRotation * r;
+    const Eigen::Matrix2d k_pq = kRotation * k * kRotation;
+    system.add(kDofs, r_pq, k_pq, input.with_tangent);
+  }
+  bool has_potential() const override { return true; }
+  std::optional<EnergyChange> energy_change(const Eigen::VectorXd& from, const Eigen::VectorXd& to,
+                                            double) const override {
+    const auto pi = [](const Eigen::VectorXd& u) {
+      const Eigen::Vector2d xy = kRotation * Eigen::Vector2d(u[0], u[1]);
+      const double x = xy[0], y = xy[1];
+      return 0.25 * std::pow(x, 4) - x + 0.25 * std::pow(y, 4) + 0.5 * (0.5 - x * x) * y * y;
+    };
+    return EnergyChange{pi(to) - pi(from), std::abs(pi(to)) + std::abs(pi(from))};
+  }
+
+ private:
+  static constexpr std::array<int, 2> kDofs{0, 1};
+  // (p, q) ↔ (x, y): symmetric and orthogonal, its own inverse.
+  static inline const Eigen::Matrix2d kRotation = (Eigen::Matrix2d() << 1, 1, 1, -1).finished() / std::sqrt(2.0);
+};
+
+// Stable mode with reused factorisations, from (x, y) = (1/2, 0): the tangent factorised near the
+// solution is indefinite, the steps on to the saddle come from the inertia-corrected factorisation, and
+// the saddle is left for a minimum. The shift scans do not start again from 0 at a tangent already found
+// indefinite: up to the push, the failed Cholesky attempts are one at the near test, six in the scan to
+// σ = 1 (1e-6 … 0.1), and one where the saddle's test starts a decade below that σ (scanning from 0 each
+// time: fifteen); then one in the descent from the push.
+TEST(NewtonSolver, ASaddleFoundIndefiniteNearTheSolutionIsLeftWithoutRescanningItsShift) {
+  std::vector<std::unique_ptr<Form>> forms;
+  forms.push_back(std::make_unique<PitchforkForm>());
+  NonlinearProblem problem(DofMap(2), std::move(forms));
+  NewtonSettings settings;
+  settings.stable_equilibrium = true;
+  settings.reuse_factorization = true;
+  NewtonSolver newton(problem, settings);
+  Eigen::VectorXd u = Eigen::Vector2d::Constant(0.5 / std::sqrt(2.0));
+  const NewtonOutcome out = newton.solve(u, 1.0);
+  ASSERT_TRUE(out.converged);
+  EXPECT_EQ(out.escapes, 1);
+  EXPECT_EQ(out.final_shift, 0.0);
+  const Eigen::Vector2d xy = (Eigen::Matrix2d() << 1, 1, 1, -1).finished() / std::sqrt(2.0) * u;
+  const double x = xy[0], y = xy[1];
+  EXPECT_NEAR(x * x * x - x * y * y, 1.0, 1e-8);
+  EXPECT_NEAR(y * y, x * x - 0.5, 1e-8);
+  const auto& stats = newton.linear_stats();
+  EXPECT_EQ(stats.failed_cholesky, 8 + 1);
 }
 
 }  // namespace

@@ -29,6 +29,7 @@ struct SparseDirectSolver::Impl {
   bool cholesky_analysed = false;
   bool lu_analysed = false;
   bool lu_active = false;  // the last factorisation is the LU one
+  double cholesky_shift = -1.0;  // relative shift of the Cholesky factorisation held; < 0: none held
   bool factorized = false;
   int cholesky_failures = 0;
   double last_relative_shift = 0.0;  // of factorize_inertia_corrected
@@ -81,6 +82,7 @@ void SparseDirectSolver::factorize(const SparseMatrix& matrix) {
       s.cholesky_failures = 0;
       s.lu_active = false;
       s.factorized = true;
+      s.cholesky_shift = 0.0;
       return;
     }
     // Not positive definite: LU for this matrix; after two such matrices in a row, LU from now on.
@@ -113,6 +115,7 @@ void SparseDirectSolver::factorize_lu(const SparseMatrix& matrix) {
   ++stats_.factorizations;
   stats_.used_lu = true;
   s.lu_active = true;
+  s.cholesky_shift = -1.0;
   s.factorized = s.lu.info() == Eigen::Success;
   if (s.lu.info() != Eigen::Success) throw std::runtime_error("the tangent stiffness matrix is singular");
 }
@@ -128,6 +131,7 @@ Eigen::VectorXd SparseDirectSolver::solve(const Eigen::VectorXd& rhs) {
 
 bool SparseDirectSolver::has_factorization() const { return impl_->factorized; }
 bool SparseDirectSolver::uses_lu() const { return impl_->use_lu; }
+double SparseDirectSolver::held_cholesky_shift() const { return impl_->cholesky_shift; }
 
 bool SparseDirectSolver::factorize_cholesky(const SparseMatrix& matrix, double relative_shift) {
   auto& s = *impl_;
@@ -159,19 +163,24 @@ bool SparseDirectSolver::factorize_cholesky(const SparseMatrix& matrix, double r
   if (s.cholesky.info() != Eigen::Success) {
     ++stats_.failed_cholesky;
     s.factorized = s.lu_active;  // only an earlier LU is left to solve with
+    s.cholesky_shift = -1.0;
     return false;
   }
   if (relative_shift > 0) ++stats_.shifted_factorizations;
   s.factorized = true;
   s.lu_active = false;
+  s.cholesky_shift = relative_shift;
   return true;
 }
 
-double SparseDirectSolver::factorize_inertia_corrected(const SparseMatrix& matrix, bool from_zero) {
+double SparseDirectSolver::factorize_inertia_corrected(const SparseMatrix& matrix,
+                                                       std::optional<double> first_shift) {
   auto& s = *impl_;
-  constexpr double kFirstShift = 1e-6, kGrowth = 10.0, kLargestShift = 1e4;
+  constexpr double kGrowth = 10.0, kLargestShift = 1e4;
   // Start one decade below the last shift that worked (or at 0): the tangent along a path changes slowly.
-  double shift = !from_zero && s.last_relative_shift > 10 * kFirstShift ? s.last_relative_shift / kGrowth : 0.0;
+  double shift = first_shift ? *first_shift
+                 : s.last_relative_shift > 10 * kFirstShift ? s.last_relative_shift / kGrowth
+                                                              : 0.0;
   while (!factorize_cholesky(matrix, shift)) {
     shift = shift == 0.0 ? kFirstShift : kGrowth * shift;
     if (shift > kLargestShift) throw std::runtime_error("no shift makes the tangent positive definite");

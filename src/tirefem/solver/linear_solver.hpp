@@ -3,6 +3,7 @@
 // the matrix is not positive definite), UMFPACK for unsymmetric ones. The symbolic analysis is done on
 // the first factorisation and reused, since the pattern never changes within a run.
 #include <memory>
+#include <optional>
 
 #include "tirefem/solver/sparse_system.hpp"
 
@@ -43,13 +44,18 @@ class SparseDirectSolver {
   bool has_factorization() const;
   // True when every factorisation is an LU (an unsymmetric problem, or a sticky switch after indefinite ones).
   bool uses_lu() const;
+  // The relative shift σ of the Cholesky factorisation solve() uses (0: of A itself); < 0 when solve()
+  // uses an LU or nothing.
+  double held_cholesky_shift() const;
 
   // Inertia correction (symmetric A): a Cholesky factorisation of A + σ·diag|A| with the smallest σ of
   // 0, 1e-6, 1e-5, … that makes it positive definite (starting near the last σ that worked, since
   // consecutive tangents are alike). Returns σ: 0 when A itself is positive definite; σ > 0 marks an
   // indefinite A, and solve() then gives a step that descends the energy (MODEL.md §8). Throws when even
-  // σ = 1e4 fails. `from_zero`: try σ = 0 first whatever the last σ was (to tell whether A is stable).
-  double factorize_inertia_corrected(const SparseMatrix& matrix, bool from_zero = false);
+  // σ = 1e4 fails. `first_shift`: the first σ tried, whatever the last σ was (0: to tell whether A is
+  // stable; kFirstShift when σ = 0 has just failed on this A).
+  static constexpr double kFirstShift = 1e-6;
+  double factorize_inertia_corrected(const SparseMatrix& matrix, std::optional<double> first_shift = {});
   // One Cholesky attempt of A + σ·diag|A| (σ = relative_shift ≥ 0): false when that is not positive
   // definite (then there is no usable factorisation).
   bool factorize_cholesky(const SparseMatrix& matrix, double relative_shift = 0.0);

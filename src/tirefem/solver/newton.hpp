@@ -1,6 +1,7 @@
 #pragma once
 // Newton–Raphson for R(u, λ) = 0 at a fixed load factor, and load stepping with automatic cut-back.
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "tirefem/solver/linear_solver.hpp"
@@ -104,7 +105,9 @@ class NewtonSolver {
   // tell its stability (shift_ 0, round-off, or indefinite: then LU steps follow, as without reuse).
   void test_stability_nearest();
   // Inertia-corrected factorisation of the current tangent and the step from it.
-  bool solve_inertia_corrected(const Eigen::VectorXd& rhs, Eigen::VectorXd& du);
+  // `first_shift`: where the shift scan starts (by default next to the last shift that worked).
+  bool solve_inertia_corrected(const Eigen::VectorXd& rhs, Eigen::VectorXd& du,
+                               std::optional<double> first_shift = {});
   // Cuts back the step base → base + du (residual r_base there) until the energy falls by the Armijo
   // amount; sets u to the accepted point. Returns the accepted fraction of the step.
   double energy_line_search(const Eigen::VectorXd& base, const Eigen::VectorXd& du, double slope,
