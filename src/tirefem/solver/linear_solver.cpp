@@ -25,6 +25,7 @@ std::mutex& ordering_mutex() {
 }  // namespace
 
 struct SparseDirectSolver::Impl {
+  bool symmetric = false;
   bool use_lu = false;
   bool cholesky_analysed = false;
   bool lu_analysed = false;
@@ -42,6 +43,7 @@ struct SparseDirectSolver::Impl {
 SparseDirectSolver::SparseDirectSolver(bool symmetric) : impl_(std::make_unique<Impl>()) {
   // "Not positive definite" is an answer here (inertia correction, LU fallback), not a warning to print.
   impl_->cholesky.cholmod().print = 0;
+  impl_->symmetric = symmetric;
   impl_->use_lu = !symmetric;
 }
 
@@ -212,22 +214,44 @@ class FactorizationPreconditioner {
 };
 }  // namespace
 
-bool SparseDirectSolver::solve_preconditioned(const SparseMatrix& matrix, const Eigen::VectorXd& rhs,
-                                              Eigen::VectorXd& x, double tolerance, int max_iterations) {
-  if (!has_factorization()) return false;
-  const auto t0 = std::chrono::steady_clock::now();
-  Eigen::GMRES<SparseMatrix, FactorizationPreconditioner> gmres;
-  gmres.preconditioner().bind(this);
+namespace {
+// Matrix: the sparse type GMRES works on; Operand: it or a Map of one (bound without a copy).
+template <class Matrix, class Operand>
+bool gmres_on_factorization(const Operand& matrix, SparseDirectSolver* solver, const Eigen::VectorXd& rhs,
+                            Eigen::VectorXd& x, double tolerance, int max_iterations, int& iterations) {
+  Eigen::GMRES<Matrix, FactorizationPreconditioner> gmres;
+  gmres.preconditioner().bind(solver);
   gmres.set_restart(max_iterations);
   gmres.setMaxIterations(max_iterations);
   gmres.setTolerance(tolerance);
   gmres.compute(matrix);
   x = gmres.solve(rhs);
+  iterations = static_cast<int>(gmres.iterations());
   // GMRES measures the preconditioned residual; a preconditioner from a very different matrix can make
   // that small while the true one is not: accept a step only if it also reduces the true residual well.
-  const bool ok = gmres.info() == Eigen::Success && x.allFinite() &&
-                  (rhs - matrix * x).norm() <= kMaxTrueResidual * rhs.norm();
-  stats_.krylov_iterations += static_cast<int>(gmres.iterations());
+  return gmres.info() == Eigen::Success && x.allFinite() &&
+         (rhs - matrix * x).norm() <= kMaxTrueResidual * rhs.norm();
+}
+}  // namespace
+
+bool SparseDirectSolver::solve_preconditioned(const SparseMatrix& matrix, const Eigen::VectorXd& rhs,
+                                              Eigen::VectorXd& x, double tolerance, int max_iterations) {
+  if (!has_factorization()) return false;
+  const auto t0 = std::chrono::steady_clock::now();
+  int iterations = 0;
+  bool ok = false;
+  if (impl_->symmetric) {
+    // A symmetric matrix's column-major arrays are also its row-major ones, and Eigen's row-major
+    // sparse × vector product runs on the OpenMP threads (the column-major one on one thread).
+    using RowMajorMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
+    const Eigen::Map<const RowMajorMatrix> rows(matrix.rows(), matrix.cols(), matrix.nonZeros(),
+                                                matrix.outerIndexPtr(), matrix.innerIndexPtr(),
+                                                matrix.valuePtr());
+    ok = gmres_on_factorization<RowMajorMatrix>(rows, this, rhs, x, tolerance, max_iterations, iterations);
+  } else {
+    ok = gmres_on_factorization<SparseMatrix>(matrix, this, rhs, x, tolerance, max_iterations, iterations);
+  }
+  stats_.krylov_iterations += iterations;
   ++(ok ? stats_.krylov_solves : stats_.krylov_failures);
   stats_.krylov_s += seconds_since(t0);
   return ok;
