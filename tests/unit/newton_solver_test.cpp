@@ -113,13 +113,25 @@ struct StableSolve {
   int gmres_solves = 0;  // on a reused factorisation, given up ones included
 };
 
-StableSolve solve_double_well(double start, double near_solution_residual) {
+// A problem of the one form F on `dof_count` DOFs.
+template <class F>
+NonlinearProblem problem_of(int dof_count) {
   std::vector<std::unique_ptr<Form>> forms;
-  forms.push_back(std::make_unique<DoubleWellForm>());
-  NonlinearProblem problem(DofMap(1), std::move(forms));
+  forms.push_back(std::make_unique<F>());
+  return NonlinearProblem(DofMap(dof_count), std::move(forms));
+}
+
+// Stable equilibrium with reused factorisations, as the static contact studies solve.
+NewtonSettings stable_with_reuse() {
   NewtonSettings settings;
   settings.stable_equilibrium = true;
   settings.reuse_factorization = true;
+  return settings;
+}
+
+StableSolve solve_double_well(double start, double near_solution_residual) {
+  NonlinearProblem problem = problem_of<DoubleWellForm>(1);
+  NewtonSettings settings = stable_with_reuse();
   settings.near_solution_residual = near_solution_residual;
   NewtonSolver newton(problem, settings);
   Eigen::VectorXd u(1);
@@ -198,13 +210,8 @@ class PitchforkForm : public Form {
 // σ = 1 (1e-6 … 0.1), and one where the saddle's test starts a decade below that σ (scanning from 0 each
 // time: fifteen); then one in the descent from the push.
 TEST(NewtonSolver, ASaddleFoundIndefiniteNearTheSolutionIsLeftWithoutRescanningItsShift) {
-  std::vector<std::unique_ptr<Form>> forms;
-  forms.push_back(std::make_unique<PitchforkForm>());
-  NonlinearProblem problem(DofMap(2), std::move(forms));
-  NewtonSettings settings;
-  settings.stable_equilibrium = true;
-  settings.reuse_factorization = true;
-  NewtonSolver newton(problem, settings);
+  NonlinearProblem problem = problem_of<PitchforkForm>(2);
+  NewtonSolver newton(problem, stable_with_reuse());
   Eigen::VectorXd u = Eigen::Vector2d::Constant(0.5 / std::sqrt(2.0));
   const NewtonOutcome out = newton.solve(u, 1.0);
   ASSERT_TRUE(out.converged);
