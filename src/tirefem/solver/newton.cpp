@@ -62,20 +62,6 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
   // example's load curve: the scan from 0 took 6 factorisations at 30 mm, for the 1e-2 found two
   // iterations before). Found positive definite there, the state is stable only if σ = 0 also is.
   const auto final_test_shift = [&] { return saddle_ahead && last_step_shift > 0 ? 0.1 * last_step_shift : 0.0; };
-  // u has been pushed off an unstable equilibrium (or off the way to one): a new descent starts.
-  const auto restart_after_push = [&] {
-    ++out.escapes;
-    out.escaped_shift = std::max(out.escaped_shift, shift_);
-    pending = false;
-    increment_norm = std::numeric_limits<double>::infinity();
-    // The divergence test and the energy criterion measure from the pushed state, not from the residual
-    // of the saddle (round-off small: any later iterate would look 1e4 times larger and be taken for
-    // divergence).
-    first_residual = -1.0;
-    previous_residual = 0.0;
-    restart = true;
-    saddle_ahead = false;
-  };
   for (int it = 0;; ++it) {
     problem_.evaluate(u, load_factor, true);
     Eigen::VectorXd r = dofs.gather(problem_.system().residual());
@@ -190,8 +176,18 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
           pushed = shift_ > 0 && out.escapes < kMaxEscapes && push_off_saddle(u, load_factor);
         }
         if (pushed) {
+          ++out.escapes;
+          out.escaped_shift = std::max(out.escaped_shift, shift_);
           out.converged = false;
-          restart_after_push();
+          pending = false;
+          saddle_ahead = false;
+          increment_norm = std::numeric_limits<double>::infinity();
+          // The pushed state is the start of a new descent: the divergence test and the energy criterion
+          // measure from it, not from the residual of the saddle (round-off small: any later iterate
+          // would look 1e4 times larger and be taken for divergence).
+          first_residual = -1.0;
+          previous_residual = 0.0;
+          restart = true;
           continue;
         }
       }
