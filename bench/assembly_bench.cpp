@@ -21,7 +21,7 @@
 #include "tirefem/analysis/inflation.hpp"
 #include "tirefem/case/case_reader.hpp"
 #include "tirefem/forms/pressure_form.hpp"
-#include "tirefem/forms/shell_internal_force.hpp"
+#include "tirefem/analysis/tyre_shell_forms.hpp"
 #include "tirefem/forms/winkler_contact_form.hpp"
 
 namespace {
@@ -41,7 +41,7 @@ ContactProblem contact_problem(const TyreMesh& tm, const Case& c) {
   DofMap dofs(tm.mesh.dof_count());
   dofs.fix(tm.fixed_dofs);
   std::vector<std::unique_ptr<Form>> forms;
-  forms.push_back(std::make_unique<ShellInternalForce>(tm.mesh, tm.sections, Kinematics::nonlinear));
+  add_tyre_shell_forms(forms, tm, Kinematics::nonlinear);
   forms.push_back(std::make_unique<PressureForm>(tm.mesh, tm.pressure_elements, c.inflation.pressure,
                                                  Kinematics::nonlinear, /*symmetrize=*/true));
   auto w = std::make_unique<WinklerContactForm>(tm.mesh, tyre_tread_points(tm, c.tyre, c.contact.quadrature),

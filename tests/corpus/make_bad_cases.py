@@ -151,6 +151,10 @@ EDITS = [
     ("deflection-from-unknown", "load_curve[0].deflection_from", [('name = "plane"\nsupport = { kind = "plane" }\ntheory = "nonlinear"',
                                                                   'name = "plane"\nsupport = { kind = "plane" }\ntheory = "nonlinear"\ndeflection_from = "inflated"')]),
     ("meridional-grading-unknown", "mesh.meridional_grading", [("half_model = true", 'half_model = true\nmeridional_grading = "uniform"')]),
+    ("face-bending-negative", "tyre.zones[0].outer.bending_stiffness[1]",
+     [('outer = { plies = ["belt1", "belt2"] }', 'outer = { plies = ["belt1", "belt2"], bending_stiffness = [100.0, -1000.0] }')]),
+    ("face-bending-one-number", "tyre.zones[0].outer.bending_stiffness",
+     [('outer = { plies = ["belt1", "belt2"] }', 'outer = { plies = ["belt1", "belt2"], bending_stiffness = [1000.0] }')]),
 ]
 
 

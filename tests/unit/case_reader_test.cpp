@@ -7,6 +7,7 @@
 #include "case_reader_test_support.hpp"
 #include "tirefem/element/section.hpp"
 #include "tirefem/tyre/meridian_profile.hpp"
+#include "tirefem/tyre/tyre_mesh.hpp"
 
 namespace tirefem {
 namespace {
@@ -243,6 +244,35 @@ TEST(CaseReader, MissingFileAndProgrammaticValidation) {
     EXPECT_EQ(std::string(e.what()),
               kExample.string() + ": tyre.zones[2].core_shear_modulus: must be > 0 (got -1)");
   }
+}
+
+}  // namespace
+}  // namespace tirefem
+
+namespace tirefem {
+namespace {
+
+using namespace case_test;
+
+TEST(CaseReader, ReadsAFacesBendingStiffnessIntoItsZonesSections) {
+  const Case c = parse_case(edited("outer = { rubber = { E = 3.0, nu = 0.49, thickness = 3.0 } }",
+                                   "outer = { rubber = { E = 3.0, nu = 0.49, thickness = 3.0 }, "
+                                   "bending_stiffness = [50.0, 60.0] }"),
+                            "case.toml");
+  EXPECT_EQ(c.tyre.zones[2].outer.bending_stiffness, Eigen::Vector2d(50.0, 60.0));
+  EXPECT_EQ(c.tyre.zones[2].inner.bending_stiffness, Eigen::Vector2d::Zero());
+  MeshSettings coarse = c.mesh;
+  coarse.circumferential_elements = 24;
+  coarse.meridional_elements = 12;
+  const TyreMesh tm = build_tyre_mesh(c.tyre, coarse);
+  int bent = 0;
+  for (int e = 0; e < tm.mesh.element_count(); ++e) {
+    bent += tm.sections[e].outer_face_bending == Eigen::Vector2d(50.0, 60.0);
+    const Zone& zone = c.tyre.zones[tm.element_zone[e]];
+    EXPECT_EQ(tm.sections[e].outer_face_bending, zone.outer.bending_stiffness) << e;
+    EXPECT_EQ(tm.sections[e].inner_face_bending, zone.inner.bending_stiffness) << e;
+  }
+  EXPECT_GT(bent, 0);
 }
 
 }  // namespace

@@ -12,7 +12,7 @@
 #include "tirefem/analysis/first_touch.hpp"
 #include "tirefem/forms/linearized_form.hpp"
 #include "tirefem/forms/pressure_form.hpp"
-#include "tirefem/forms/shell_internal_force.hpp"
+#include "tirefem/analysis/tyre_shell_forms.hpp"
 
 namespace tirefem {
 
@@ -111,7 +111,7 @@ std::unique_ptr<Form> linearized_tyre(const TyreMesh& tm, double pressure, const
   DofMap dofs(tm.mesh.dof_count());
   dofs.fix(tm.fixed_dofs);
   std::vector<std::unique_ptr<Form>> forms;
-  forms.push_back(std::make_unique<ShellInternalForce>(tm.mesh, tm.sections, Kinematics::nonlinear));
+  add_tyre_shell_forms(forms, tm, Kinematics::nonlinear);
   forms.push_back(std::make_unique<PressureForm>(tm.mesh, tm.pressure_elements, pressure, Kinematics::nonlinear,
                                                  /*symmetrize=*/true));
   NonlinearProblem tyre(dofs, std::move(forms));
@@ -153,7 +153,7 @@ class StaticContactRun {
     dofs.fix(tm.fixed_dofs);
     std::vector<std::unique_ptr<Form>> forms;
     if (kinematics == Kinematics::nonlinear) {
-      forms.push_back(std::make_unique<ShellInternalForce>(tm.mesh, tm.sections, kinematics));
+      add_tyre_shell_forms(forms, tm, kinematics);
       forms.push_back(std::make_unique<PressureForm>(tm.mesh, tm.pressure_elements, inflation.pressure,
                                                      kinematics, /*symmetrize=*/true));
     } else {

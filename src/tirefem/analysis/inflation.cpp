@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "tirefem/forms/pressure_form.hpp"
-#include "tirefem/forms/shell_internal_force.hpp"
+#include "tirefem/analysis/tyre_shell_forms.hpp"
 
 namespace tirefem {
 
@@ -19,7 +19,7 @@ std::unique_ptr<NonlinearProblem> inflation_problem(const TyreMesh& tm, double p
   DofMap dofs(tm.mesh.dof_count());
   dofs.fix(tm.fixed_dofs);
   std::vector<std::unique_ptr<Form>> forms;
-  forms.push_back(std::make_unique<ShellInternalForce>(tm.mesh, tm.sections, kinematics));
+  add_tyre_shell_forms(forms, tm, kinematics);
   // The inflated surface is closed by the rim (bead held) and, in the half model, the symmetry plane,
   // so the pressure's load stiffness is symmetric in the sum (see PressureForm).
   forms.push_back(std::make_unique<PressureForm>(tm.mesh, tm.pressure_elements, pressure, kinematics,

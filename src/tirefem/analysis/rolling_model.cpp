@@ -8,7 +8,7 @@
 
 #include "tirefem/analysis/inflation.hpp"
 #include "tirefem/forms/pressure_form.hpp"
-#include "tirefem/forms/shell_internal_force.hpp"
+#include "tirefem/analysis/tyre_shell_forms.hpp"
 
 namespace tirefem {
 
@@ -54,7 +54,7 @@ RollingModel::RollingModel(const TyreMesh& tm, const TyreDescription& tyre, cons
   DofMap dofs(tm.mesh.dof_count());
   dofs.fix(tm.fixed_dofs);
   std::vector<std::unique_ptr<Form>> forms;
-  forms.push_back(std::make_unique<ShellInternalForce>(tm.mesh, tm.sections, Kinematics::nonlinear));
+  add_tyre_shell_forms(forms, tm, Kinematics::nonlinear);
   forms.push_back(std::make_unique<PressureForm>(tm.mesh, tm.pressure_elements, inflation.pressure,
                                                  Kinematics::nonlinear, /*symmetrize=*/false));
   auto contact = std::make_unique<WinklerContactForm>(tm.mesh, fp.tread_points, tyre.tread_stiffness, *support_);

@@ -33,6 +33,9 @@ struct FaceLayup {
   CordRubberRule rule = CordRubberRule::halpin_tsai;
   // A (N/mm), Voigt [11, 22, 12] with engineering shear; axis 1 meridional, axis 2 circumferential.
   std::optional<Eigen::Matrix3d> direct_stiffness;
+  // The face's own bending stiffness D (N·mm), [meridional, circumferential]; zero in the paper's membrane
+  // faces (forms/face_bending_form.hpp).
+  Eigen::Vector2d bending_stiffness = Eigen::Vector2d::Zero();
 };
 
 // A stretch of the meridian with one construction. Runs from the previous zone's s_end (or 0) to s_end.

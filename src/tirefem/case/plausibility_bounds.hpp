@@ -25,6 +25,8 @@ inline constexpr Bound kTreadStiffness{1e-3, 100.0, "N/mm³"};
 inline constexpr Bound kPressure{0.0, 2.0, "MPa"};
 // Diagonal terms of a directly given face stiffness A (N/mm): the modulus bound times the thickness bound.
 inline constexpr double kMaxFaceStiffness = 1e8;
+// A face's own bending stiffness D (N·mm): 0 (a membrane) up to a 25 mm steel plate's ~2.6e8.
+inline constexpr Bound kFaceBendingStiffness{0.0, 1e9, "N·mm"};
 
 // Drum diameter (mm): at least the tyre's outer diameter (see support_reader.hpp), at most 100 m.
 inline constexpr double kMaxDrumDiameter = 1e5;

@@ -17,6 +17,10 @@ struct ElementSection {
   // false: the paper's compatible bilinear faces. true: their in-plane strains enriched by enhanced
   // assumed strains (EAS-4), condensed per element: no parasitic shear when a face bends in its plane.
   bool enhanced_faces = false;
+  // The faces' own bending stiffness D (N·mm = N·mm²/mm), along the meridian (u) and the circumference
+  // (v); zero in the paper's membrane faces (forms/face_bending_form.hpp).
+  Eigen::Vector2d inner_face_bending = Eigen::Vector2d::Zero();
+  Eigen::Vector2d outer_face_bending = Eigen::Vector2d::Zero();
 };
 
 // Isotropic membrane of thickness t (plane stress): A = E t / (1 − ν²) [[1, ν, 0], [ν, 1, 0], [0, 0, (1 − ν)/2]].

@@ -1,0 +1,15 @@
+#pragma once
+// The tyre wall's forms: the three-layer shell (MODEL.md §3) and, where the case gives its faces a
+// bending stiffness, their bending (forms/face_bending_form.hpp).
+#include <memory>
+#include <vector>
+
+#include "tirefem/element/element_geometry.hpp"
+#include "tirefem/solver/form.hpp"
+#include "tirefem/tyre/tyre_mesh.hpp"
+
+namespace tirefem {
+
+void add_tyre_shell_forms(std::vector<std::unique_ptr<Form>>& forms, const TyreMesh& tm, Kinematics kinematics);
+
+}  // namespace tirefem
