@@ -444,7 +444,8 @@ TEST(Cli, ATyreWithoutPliesWritesItsResults) {
       text.replace(p, from.size(), to);
   };
   replace_all(R"(inner = { plies = ["carcass", "carcass"] })", "inner = { rubber = { E = 40.0, nu = 0.49, thickness = 2.0 } }");
-  replace_all(R"(outer = { plies = ["belt1", "belt2"] })", "outer = { rubber = { E = 60.0, nu = 0.49, thickness = 2.4 } }");
+  replace_all(R"(outer = { plies = ["belt1", "belt2"], bending_stiffness = [100.0, 300.0] })",
+              "outer = { rubber = { E = 60.0, nu = 0.49, thickness = 2.4 }, bending_stiffness = [100.0, 300.0] }");
   ASSERT_EQ(text.find("{ plies = ["), std::string::npos) << "the coarse case's zones changed";
   write_case(work / "case.toml", text);
   const CliRun r = run_cli_in(work, "run case.toml --out res");

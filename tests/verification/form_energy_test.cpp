@@ -141,7 +141,7 @@ TEST(FormEnergy, LinearizedTyreIsTheGradientOfItsQuadraticEnergy) {
   NonlinearProblem tyre(dofs, std::move(forms));
   tyre.evaluate(inflated.displacement, 1.0, true);
   std::vector<std::unique_ptr<Form>> linear;
-  linear.push_back(std::make_unique<LinearizedForm>(tm.mesh, dofs, tyre.system().tangent(), tyre.system().residual(),
+  linear.push_back(std::make_unique<LinearizedForm>(dofs, tyre.system().tangent(), tyre.system().residual(),
                                                     inflated.displacement));
   NonlinearProblem p(dofs, std::move(linear));
   Eigen::VectorXd u = inflated.displacement;

@@ -116,7 +116,7 @@ std::unique_ptr<Form> linearized_tyre(const TyreMesh& tm, double pressure, const
                                                  /*symmetrize=*/true));
   NonlinearProblem tyre(dofs, std::move(forms));
   tyre.evaluate(u0, 1.0, true);
-  return std::make_unique<LinearizedForm>(tm.mesh, dofs, tyre.system().tangent(), tyre.system().residual(), u0);
+  return std::make_unique<LinearizedForm>(dofs, tyre.system().tangent(), tyre.system().residual(), u0);
 }
 
 }  // namespace

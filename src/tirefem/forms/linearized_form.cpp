@@ -2,13 +2,10 @@
 
 namespace tirefem {
 
-LinearizedForm::LinearizedForm(const ShellMesh& mesh, DofMap dofs, SparseMatrix tangent,
-                               Eigen::VectorXd residual, Eigen::VectorXd u0)
-    : mesh_(mesh), dofs_(std::move(dofs)), tangent_(std::move(tangent)), residual_(std::move(residual)), u0_(std::move(u0)) {}
+LinearizedForm::LinearizedForm(DofMap dofs, SparseMatrix tangent, Eigen::VectorXd residual, Eigen::VectorXd u0)
+    : dofs_(std::move(dofs)), tangent_(std::move(tangent)), residual_(std::move(residual)), u0_(std::move(u0)) {}
 
-void LinearizedForm::add_pattern(PatternBuilder& pattern) const {
-  for (int e = 0; e < mesh_.element_count(); ++e) pattern.add_block(mesh_.element_dofs(e));
-}
+void LinearizedForm::add_pattern(PatternBuilder& pattern) const { pattern.add_matrix_pattern(tangent_); }
 
 void LinearizedForm::assemble(const FormInput& input, SparseSystem& system) const {
   const Eigen::VectorXd du = dofs_.gather(input.displacement - u0_);

@@ -21,6 +21,11 @@ SparseMatrix PatternBuilder::build(const DofMap& dofs) const {
       }
     }
   }
+  for (const SparseMatrix* m : matrices_) {
+    if (m->rows() != n || m->cols() != n) throw std::invalid_argument("add_matrix_pattern: the matrix is not over the equations");
+    for (int j = 0; j < n; ++j)
+      for (SparseMatrix::InnerIterator it(*m, j); it; ++it) rows_of_column[j].push_back(static_cast<int>(it.row()));
+  }
   std::vector<Eigen::Triplet<double>> entries;
   for (int j = 0; j < n; ++j) {
     auto& rows = rows_of_column[j];

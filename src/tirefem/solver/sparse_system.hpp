@@ -20,10 +20,13 @@ using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 class PatternBuilder {
  public:
   void add_block(std::span<const int> dofs) { blocks_.emplace_back(dofs.begin(), dofs.end()); }
+  // Every entry of a matrix over the equations of the DofMap that build() gets; it must outlive build().
+  void add_matrix_pattern(const SparseMatrix& matrix) { matrices_.push_back(&matrix); }
   SparseMatrix build(const DofMap& dofs) const;
 
  private:
   std::vector<std::vector<int>> blocks_;
+  std::vector<const SparseMatrix*> matrices_;
 };
 
 // The element blocks of one parallel loop, one slot per item (element, tread point, ...): set() may be
