@@ -253,8 +253,10 @@ TEST(CaseReaderChecks, PlausibilityBounds) {
       {"stiffness = 1.0", "stiffness = 1e9", "tyre.tread.stiffness: must be in [0.001, 100] N/mm³"},
       {"shear_modulus = 0.55", "shear_modulus = 1e9", "tyre.tread.shear_modulus: must be in [0.001, 1e+06] MPa"},
       {"pressure = 0.2", "pressure = 2.5", "inflation.pressure: must be in [0, 2] MPa"},
-      {"outer = { plies = [\"belt1\", \"belt2\"] }", "outer = { stiffness = [[2e8, 0, 0], [0, 1e3, 0], [0, 0, 1e3]] }",
+      {kBeltFace, "outer = { stiffness = [[2e8, 0, 0], [0, 1e3, 0], [0, 0, 1e3]] }",
        "tyre.zones[0].outer.stiffness[0][0]: must be ≤ 1e+08 N/mm"},
+      {kBeltFace, "outer = { plies = [\"belt1\", \"belt2\"], bending_stiffness = [100.0, 2e9] }",
+       "tyre.zones[0].outer.bending_stiffness[1]: must be in [0, 1e+09] N·mm"},
   };
   for (const Case_& c : cases) {
     SCOPED_TRACE(c.to);

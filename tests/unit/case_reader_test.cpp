@@ -176,17 +176,17 @@ TEST(CaseReader, PlyAnglesAndNames) {
   EXPECT_CONTAINS(error_of(edited("angle = 90.0", "angle = 95.0")),
                   "tyre.plies.carcass.angle: must be in [-90, 90] (got 95)");
   const std::string text =
-      edited("outer = { plies = [\"belt1\", \"belt2\"] }", "outer = { plies = [\"belt1\", \"belt3\"] }");
+      edited(kBeltFace, "outer = { plies = [\"belt1\", \"belt3\"] }");
   EXPECT_EQ(error_of(text), where(text, "\"belt3\"") +
                                 "tyre.zones[0].outer.plies[1]: unknown ply \"belt3\" (defined in "
                                 "[tyre.plies]: belt1, belt2, carcass)");
-  EXPECT_CONTAINS(error_of(edited("outer = { plies = [\"belt1\", \"belt2\"] }", "outer = { }")),
+  EXPECT_CONTAINS(error_of(edited(kBeltFace, "outer = { }")),
                   "tyre.zones[0].outer: a face needs at least one of plies, rubber or stiffness");
 }
 
 TEST(CaseReader, OtherFaceForms) {
   // direct orthotropic stiffness, an inline ply, a rule override, rubber layers as an array, constants
-  std::string text = edited("outer = { plies = [\"belt1\", \"belt2\"] }",
+  std::string text = edited(kBeltFace,
                             "outer = { stiffness = [[1000, 6000, 0], [6000, 37000, 0], [0, 0, 6000]] }");
   auto replace_first = [&text](std::string_view from, std::string_view to) {
     text.replace(text.find(from), from.size(), to);
@@ -204,11 +204,11 @@ TEST(CaseReader, OtherFaceForms) {
   EXPECT_LT((*c.tyre.zones[1].outer.direct_stiffness - isotropic_membrane(4.0, 0.49, 8.0)).norm(), 1e-12);
 
   EXPECT_CONTAINS(
-      error_of(edited("outer = { plies = [\"belt1\", \"belt2\"] }",
+      error_of(edited(kBeltFace,
                       "outer = { stiffness = [[1000, 6000, 0], [5000, 37000, 0], [0, 0, 6000]] }")),
       "tyre.zones[0].outer.stiffness: must be symmetric");
   EXPECT_CONTAINS(
-      error_of(edited("outer = { plies = [\"belt1\", \"belt2\"] }",
+      error_of(edited(kBeltFace,
                       "outer = { stiffness = [[1000, 9000, 0], [9000, 37000, 0], [0, 0, 6000]] }")),
       "tyre.zones[0].outer.stiffness: must be positive definite");
 

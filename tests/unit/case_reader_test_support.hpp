@@ -19,6 +19,10 @@ namespace tirefem::case_test {
 inline const std::filesystem::path kExample =
     std::filesystem::path(TIREFEM_SOURCE_DIR) / "examples/175-70R13.toml";
 
+// The example's belt face, as its text stands (tests edit it).
+inline constexpr std::string_view kBeltFace =
+    "outer = { plies = [\"belt1\", \"belt2\"], bending_stiffness = [100.0, 300.0] }";
+
 inline std::string example_text() {
   std::ifstream in(kExample);
   std::ostringstream s;
