@@ -17,14 +17,6 @@
 namespace tirefem::verification {
 namespace {
 
-Eigen::VectorXd random_vector(int n, unsigned seed, double scale) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> d(-1.0, 1.0);
-  Eigen::VectorXd v(n);
-  for (int i = 0; i < n; ++i) v[i] = scale * d(rng);
-  return v;
-}
-
 // |dΠ/dh − v·R| / |v·R| for the problem's free DOFs (v zero on the fixed ones).
 double energy_gradient_error(NonlinearProblem& problem, const Eigen::VectorXd& u, const Eigen::VectorXd& free_v,
                              double load_factor, double h) {

@@ -9,6 +9,7 @@
 // grows with φ), 3 × 3 tread points each. The tread points' mesh parameters are (u, v) = (x, φ).
 #include <cmath>
 #include <memory>
+#include <random>
 #include <utility>
 #include <vector>
 
@@ -92,6 +93,15 @@ Eigen::MatrixXd fd_tangent(Problem& p, const Eigen::VectorXd& u, double step = k
     k.col(j) = (plus - minus) / (2.0 * step);
   }
   return k;
+}
+
+// n values uniform in [−scale, scale], reproducible from the seed.
+inline Eigen::VectorXd random_vector(int n, unsigned seed, double scale) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> d(-1.0, 1.0);
+  Eigen::VectorXd v(n);
+  for (int i = 0; i < n; ++i) v[i] = scale * d(rng);
+  return v;
 }
 
 // max |a − b| / max |b|.

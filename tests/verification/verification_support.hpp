@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCholesky>
 
 #include "tirefem/element/section.hpp"
 #include "tirefem/element/shape_functions.hpp"
@@ -214,6 +215,21 @@ inline Eigen::VectorXd solve_linear(NonlinearProblem& problem, double tolerance 
     throw std::runtime_error("solve_linear: no convergence, residual " + std::to_string(out.relative_residual) +
                              " after " + std::to_string(out.iterations) + " solves");
   return u;
+}
+
+// Stability of an equilibrium by the inertia of its tangent (Sylvester: no negative LDLᵀ pivot). The
+// equilibrium is Newton's from rest under the full load, left in `u`, for the buckling tests: the caller
+// checks that it is the unbuckled one.
+inline bool equilibrium_from_rest_is_stable(NonlinearProblem& problem, Eigen::VectorXd& u) {
+  NewtonSettings settings;
+  settings.residual_tolerance = 1e-10;
+  NewtonSolver newton(problem, settings);
+  u = Eigen::VectorXd::Zero(problem.dofs().dof_count());
+  if (!newton.solve(u, 1.0).converged) throw std::runtime_error("equilibrium_from_rest_is_stable: no convergence");
+  problem.evaluate(u, 1.0, true);
+  const Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> ldlt(problem.system().tangent());
+  if (ldlt.info() != Eigen::Success) throw std::runtime_error("equilibrium_from_rest_is_stable: LDLT failed");
+  return (ldlt.vectorD().array() < 0.0).count() == 0;
 }
 
 }  // namespace tirefem::verification
