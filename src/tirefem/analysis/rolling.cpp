@@ -256,6 +256,7 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
   r.axle_z = tm.axis_z;
   r.loaded_radius_mm = tm.axis_z - r.deflection_mm;
   RollingModel model(tm, tyre, inflation, contact, study, r);
+  model.set_progress(progress);
 
   const RollingStateResult free = free_rolling(model, study, r, progress);
   if (point_done) point_done();

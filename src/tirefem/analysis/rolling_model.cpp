@@ -19,6 +19,8 @@ constexpr double kAngleStep = 0.02;  // largest first step in tan α (1.15°) an
 constexpr double kRateReach = 0.05;  // see hold_load
 constexpr int kEasyIterations = 6;   // a step that converged within this many Newton iterations doubles
 constexpr double kJacobianSmoothing = 0.1;  // TreadFrictionForm::set_jacobian_smoothing, see below
+constexpr double kDegree = 3.14159265358979323846 / 180.0;
+constexpr double kQuietSeconds = 10.0;      // a state taking longer reports its stages (set_progress)
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // Points that may touch the support while rolling: the static patch's angular extent along the flow,
@@ -156,6 +158,20 @@ RollingModel::Attempt RollingModel::continuation(const FrictionLaw& law, const P
   const double angle_change = std::max(std::abs(target[1] - p0[1]), std::abs(target[2] - p0[2]));
   if (angle_change > kAngleStep) step = kAngleStep / angle_change;
   int cutbacks = 0;
+  const auto t0 = Clock::now();
+  // A long state reports each stage: where it is on the way (in the parameters that change) and how the
+  // stage went.
+  const auto report = [&](double t, const Parameters& p, const std::string& how) {
+    if (!progress_ || seconds_since(t0) < kQuietSeconds) return;
+    std::string where;
+    if (full_slip) where = fmt::format("μ {:.3f}", friction_->law().friction);
+    if (std::abs(target[0] - p0[0]) > 0) where += fmt::format("Rk {:.3f} mm ", tm_.axis_z / p[0]);
+    if (std::abs(target[1] - p0[1]) > 0) where += fmt::format("α {:.2f}° ", std::atan(p[1]) / kDegree);
+    if (std::abs(target[2] - p0[2]) > 0) where += fmt::format("γ {:.2f}° ", p[2] / kDegree);
+    progress_(fmt::format("    stage {:.0f}% of the way ({}): {} ({} Newton iterations, {:.0f} s so far)", 100 * t,
+                          where.empty() ? "the start state" : where.substr(0, where.find_last_not_of(' ') + 1),
+                          how, newton_->total_iterations() - newton0, seconds_since(t0)));
+  };
   std::vector<int> path;  // indices in known_ of the start state and the converged stages
   if (from_index >= 0) path.push_back(from_index);
   while (done < 1.0) {
@@ -189,8 +205,10 @@ RollingModel::Attempt RollingModel::continuation(const FrictionLaw& law, const P
         break;
       }
       step *= 0.5;
+      report(t, p, fmt::format("no convergence ({}), step halved", a.last.failure));
       continue;
     }
+    report(t, p, fmt::format("converged in {} Newton iterations", a.last.newton_iterations));
     previous_u = std::move(u);
     previous_t = done;
     u = std::move(trial);
@@ -244,6 +262,9 @@ void RollingModel::hold_load(Solved& s, double target, double tolerance, double 
     deflection_rate_at_ = s.parameters;
     s.u = std::move(u);
     s.figures = figures(s.u);
+    if (progress_ && s.counts.time_s + seconds_since(t0) >= kQuietSeconds)
+      progress_(fmt::format("    holding Qz: δz {:.3f} mm → Qz {:.1f} N ({} Newton iterations, {:.0f} s so far)", d1,
+                            s.figures.Qz_N, o.newton_iterations, s.counts.time_s + seconds_since(t0)));
     if (s.figures.Qz_N != q0) slope = (s.figures.Qz_N - q0) / (d1 - d0);
     d0 = d1, q0 = s.figures.Qz_N;
   }

@@ -55,6 +55,9 @@ class RollingModel {
   double static_full_stick_Qy(double rolling_radius);
   void fill(RollingStateResult& state, const Solved& s) const;
   void finish(SolveCounters& c) const;
+  // A state that takes long (more than kQuietSeconds) reports each further stage of its continuation
+  // and each δz step of hold_load here.
+  void set_progress(ProgressSink progress) { progress_ = std::move(progress); }
 
  private:
   // (axle height / Rk, tan α, γ, δz / axle height): κ, α, γ and the support's deflection on comparable
@@ -95,6 +98,7 @@ class RollingModel {
   Parameters deflection_rate_at_ = Parameters::Zero();
   double deflection_ = 0.0;
   std::vector<Known> known_;
+  ProgressSink progress_;
 };
 
 }  // namespace tirefem
