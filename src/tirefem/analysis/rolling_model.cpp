@@ -208,7 +208,7 @@ RollingModel::Attempt RollingModel::continuation(const FrictionLaw& law, const P
       report(t, p, fmt::format("no convergence ({}), step halved", a.last.failure));
       continue;
     }
-    report(t, p, fmt::format("converged in {} Newton iterations", a.last.newton_iterations));
+    if (t < 1.0) report(t, p, fmt::format("converged in {} Newton iterations", a.last.newton_iterations));
     previous_u = std::move(u);
     previous_t = done;
     u = std::move(trial);
