@@ -43,10 +43,11 @@ ShellMesh crown_mesh(double u_min, int nu) {
                          });
 }
 
-void expect_consistent(const ShellMesh& mesh, Kinematics kinematics, bool symmetric, const char* label) {
+void expect_consistent(const ShellMesh& mesh, Kinematics kinematics, bool symmetric, const char* label,
+                       ClampedUEdges clamped = {}) {
   SingleThread one_thread;
   const auto sections = bending_sections(mesh, 7);
-  SingleFormProblem p(mesh, std::make_unique<FaceBendingForm>(mesh, sections, kinematics, symmetric));
+  SingleFormProblem p(mesh, std::make_unique<FaceBendingForm>(mesh, sections, kinematics, symmetric, clamped));
   ASSERT_GT(p.form->stencil_count(), 0);
   const Eigen::VectorXd u = random_vector(mesh.dof_count(), 11, 0.8);  // mm: curvature changes ~ κ0
   const double tangent_error = max_relative_error(p.tangent(u), fd_tangent(p, u));
@@ -66,6 +67,11 @@ TEST(FaceBending, TangentAndEnergyAgreeWithFiniteDifferences) {
   expect_consistent(crown_mesh(-40.0, 6), Kinematics::nonlinear, false, "nonlinear, full crown");
   expect_consistent(crown_mesh(0.0, 4), Kinematics::nonlinear, true, "nonlinear, half crown (mirror)");
   expect_consistent(crown_mesh(0.0, 4), Kinematics::linear, true, "linear, half crown (mirror)");
+  expect_consistent(crown_mesh(-40.0, 6), Kinematics::nonlinear, false, "nonlinear, full, both edges clamped",
+                    {true, true});
+  expect_consistent(crown_mesh(0.0, 4), Kinematics::nonlinear, true, "nonlinear, half, u_max clamped",
+                    {false, true});
+  expect_consistent(crown_mesh(0.0, 4), Kinematics::linear, true, "linear, half, u_max clamped", {false, true});
 }
 
 TEST(FaceBending, RigidBodyMotionsStoreNothing) {
@@ -117,6 +123,46 @@ TEST(FaceBending, APlateRolledIntoACylinderStoresHalfDKappaSquared) {
   const double h = 5.0, radius = 40.0;
   EXPECT_NEAR(coarse, -std::pow(h / radius, 2) / 6.0, 0.1 * std::pow(h / radius, 2) / 6.0);
   EXPECT_NEAR(coarse / fine, 4.0, 0.2);
+}
+
+// A strip clamped at x = 0 (its slope there held along +x) and bent into the parabola w = a x²: the
+// curvature 2a is uniform and the second difference exact for a quadratic, so every node but the free
+// end's (a hinge) stores ½ D (2a)² over its tributary length, the clamped node over h/2: in all
+// ½ D (2a)² b (L − h/2). A hinged edge stores nothing at x = 0 (b (L − h) in all) and nothing at all when
+// the strip turns rigidly about that edge; the clamp does (that is what holds a bead's flap).
+TEST(FaceBending, AClampedEdgeHoldsTheSlopeOfItsFirstElement) {
+  const double length = 60.0, width = 10.0, stiffness = 250.0, a = 1e-3;
+  const int n = 12;
+  const double h = length / n;
+  const ShellMesh mesh = plate_mesh(length, width, n, 2, 0.0, 2.0);
+  std::vector<ElementSection> sections(mesh.element_count());
+  for (ElementSection& s : sections) s.outer_face_bending = {stiffness, 0.0};
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(mesh.dof_count());
+  Eigen::VectorXd parabola = zero, turned = zero;
+  const double turn = 0.01;  // rad, about the edge x = 0
+  for (int q = 0; q < mesh.pair_count(); ++q) {
+    const double x = mesh.outer_nodes[q].x();
+    parabola[outer_dof(q, 2)] = a * x * x;
+    turned[outer_dof(q, 0)] = x * (std::cos(turn) - 1.0);
+    turned[outer_dof(q, 2)] = x * std::sin(turn);
+  }
+  const double per_length = 0.5 * stiffness * 4.0 * a * a * width;
+  for (Kinematics k : {Kinematics::linear, Kinematics::nonlinear}) {
+    const FaceBendingForm clamped(mesh, sections, k, false, {true, false});
+    const FaceBendingForm hinged(mesh, sections, k, false);
+    const double e_clamped = clamped.energy_change(zero, parabola, 1.0)->change;
+    const double e_hinged = hinged.energy_change(zero, parabola, 1.0)->change;
+    // Nonlinear: the Koiter strain of the bent line is 2a cos θ, tan θ = 2ax: 0.5% short on average.
+    const double tolerance = k == Kinematics::linear ? 1e-10 : 0.01;
+    EXPECT_NEAR(e_clamped / (per_length * (length - 0.5 * h)), 1.0, tolerance);
+    EXPECT_NEAR(e_hinged / (per_length * (length - h)), 1.0, tolerance);
+    // A rigid turn about the clamped edge: the clamped node stores ½ (D/2 · h b)(2 sin(turn)/h)² (linear:
+    // its first-order part); the hinge nothing.
+    const double e_turn = clamped.energy_change(zero, turned, 1.0)->change;
+    const double expected_turn = 0.5 * (0.5 * stiffness * h * width) * std::pow(2.0 * std::sin(turn) / h, 2);
+    EXPECT_NEAR(e_turn / expected_turn, 1.0, 1e-9);
+    EXPECT_LT(std::abs(hinged.energy_change(zero, turned, 1.0)->change), 1e-12 * expected_turn);
+  }
 }
 
 // The half model with its symmetry plane carries exactly half the energy of the full model under a

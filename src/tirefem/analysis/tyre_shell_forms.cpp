@@ -8,7 +8,9 @@ namespace tirefem {
 void add_tyre_shell_forms(std::vector<std::unique_ptr<Form>>& forms, const TyreMesh& tm, Kinematics kinematics) {
   forms.push_back(std::make_unique<ShellInternalForce>(tm.mesh, tm.sections, kinematics));
   if (has_face_bending(tm.sections))
-    forms.push_back(std::make_unique<FaceBendingForm>(tm.mesh, tm.sections, kinematics, tm.half_model));
+    // The bead (u_max, and u_min on the full model) is clamped: held, and the faces' slope with it.
+    forms.push_back(std::make_unique<FaceBendingForm>(tm.mesh, tm.sections, kinematics, tm.half_model,
+                                                      ClampedUEdges{!tm.half_model, true}));
 }
 
 }  // namespace tirefem

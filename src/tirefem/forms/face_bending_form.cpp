@@ -1,6 +1,7 @@
 #include "tirefem/forms/face_bending_form.hpp"
 
 #include <optional>
+#include <stdexcept>
 
 namespace tirefem {
 
@@ -64,8 +65,10 @@ bool has_face_bending(const std::vector<ElementSection>& sections) {
 }
 
 FaceBendingForm::FaceBendingForm(const ShellMesh& mesh, const std::vector<ElementSection>& sections,
-                                 Kinematics kinematics, bool symmetric_u_min)
+                                 Kinematics kinematics, bool symmetric_u_min, ClampedUEdges clamped_u_edges)
     : kinematics_(kinematics) {
+  if (symmetric_u_min && clamped_u_edges.u_min)
+    throw std::invalid_argument("face bending: the u_min edge is either the symmetry plane or clamped");
   const Grid grid{mesh, symmetric_u_min};
   for (Face f : {Face::inner, Face::outer})
     for (int j = 0; j < mesh.v_nodes(); ++j)
@@ -78,7 +81,17 @@ FaceBendingForm::FaceBendingForm(const ShellMesh& mesh, const std::vector<Elemen
           nodes[line_before] = grid.node(i - di, j - dj);
           nodes[line_centre] = grid.node(i, j);
           nodes[line_after] = grid.node(i + di, j + dj);
-          if (!nodes[line_before].valid() || !nodes[line_after].valid()) continue;  // a hinge at the edge
+          // At a clamped edge the missing node is the mirror image of the first one inside (set below);
+          // at any other edge the line is a hinge there.
+          const bool clamped = d == Direction::u && ((i == 0 && clamped_u_edges.u_min) ||
+                                                     (i == mesh.u_nodes() - 1 && clamped_u_edges.u_max));
+          const int beyond = !nodes[line_before].valid() ? line_before : line_after;
+          const int inside = beyond == line_before ? line_after : line_before;
+          if (!nodes[line_before].valid() || !nodes[line_after].valid()) {
+            if (!clamped || !nodes[inside].valid()) continue;
+            nodes[beyond] = nodes[line_centre];
+          }
+          const bool clamp_here = clamped && nodes[beyond].pair == nodes[line_centre].pair;
           nodes[across_before] = grid.node(i - dj, j - di);
           nodes[across_after] = grid.node(i + dj, j + di);
           for (int k : {across_before, across_after})
@@ -93,10 +106,22 @@ FaceBendingForm::FaceBendingForm(const ShellMesh& mesh, const std::vector<Elemen
               s.signs[3 * k + c] = nodes[k].mirrored && c == 0 ? -1.0 : 1.0;
             }
           }
+          s.clamped = clamp_here;
+          if (clamp_here) {
+            // x_g − x_e = Q (x_1 − x_e), t along the edge element's reference chord: in the reference,
+            // X_g − X_e = −(X_1 − X_e) (no reference curvature at the edge).
+            s.reference.col(beyond) = -s.reference.col(inside);
+            const Eigen::Vector3d t = s.reference.col(inside).normalized();
+            const Eigen::Matrix3d q = Eigen::Matrix3d::Identity() - 2.0 * t * t.transpose();
+            s.transform.setIdentity();
+            s.transform.block<3, 3>(3 * beyond, 3 * beyond) = Eigen::Matrix3d::Identity() - q;
+            s.transform.block<3, 3>(3 * beyond, 3 * inside) = q;
+          }
           const double h1 = s.reference.col(line_before).norm(), h2 = s.reference.col(line_after).norm();
           const double across = 0.5 * (s.reference.col(across_before).norm() + s.reference.col(across_after).norm());
           // A node on the symmetry plane carries half of its full-model energy.
-          const double share = symmetric_u_min && i == 0 ? 0.5 : 1.0;
+          // So does a clamped edge node (half of the two elements' length is its own).
+          const double share = (symmetric_u_min && i == 0) || clamp_here ? 0.5 : 1.0;
           s.bending.weights = second_difference_weights(h1, h2);
           s.bending.reference_curvature = line_curvature(s.bending, s.reference);
           s.bending.stiffness = share * stiffness * 0.5 * (h1 + h2) * across;
@@ -108,9 +133,16 @@ void FaceBendingForm::add_pattern(PatternBuilder& pattern) const {
   for (const Stencil& s : stencils_) pattern.add_block(s.dofs);
 }
 
+Eigen::Matrix<double, 15, 1> FaceBendingForm::local_displacement(const Stencil& s, const Eigen::VectorXd& u) const {
+  Eigen::Matrix<double, 15, 1> local;
+  for (int k = 0; k < 15; ++k) local[k] = s.signs[k] * u[s.dofs[k]];
+  if (s.clamped) local = s.transform * local;
+  return local;
+}
+
 Eigen::Matrix<double, 3, 5> FaceBendingForm::current(const Stencil& s, const Eigen::VectorXd& u) const {
   Eigen::Matrix<double, 3, 5> x = s.reference;
-  for (int k = 0; k < 15; ++k) x(k % 3, k / 3) += s.signs[k] * u[s.dofs[k]];
+  x.reshaped() += local_displacement(s, u);
   return x;
 }
 
@@ -118,8 +150,7 @@ LineBendingResponse FaceBendingForm::response(const Stencil& s, const Eigen::Vec
   if (kinematics_ == Kinematics::nonlinear) return line_bending(s.bending, current(s, u), with_tangent);
   // Linear theory: ½ k (∇κ0 · u)², with ∇κ0 at the reference.
   LineBendingResponse r = line_bending(s.bending, s.reference, true);
-  Eigen::Matrix<double, 15, 1> local;
-  for (int k = 0; k < 15; ++k) local[k] = s.signs[k] * u[s.dofs[k]];
+  const Eigen::Matrix<double, 15, 1> local = local_displacement(s, u);
   r.force = r.tangent * local;
   r.energy = 0.5 * local.dot(r.force);
   return r;
@@ -132,6 +163,10 @@ void FaceBendingForm::assemble(const FormInput& input, SparseSystem& system) con
   for (int i = 0; i < n; ++i) {
     const Stencil& s = stencils_[i];
     LineBendingResponse r = response(s, input.displacement, input.with_tangent);
+    if (s.clamped) {  // back to the stencil's DOFs: Jᵀ f, Jᵀ K J (J has no mirrored x: signs are 1)
+      r.force = s.transform.transpose() * r.force;
+      if (input.with_tangent) r.tangent = s.transform.transpose() * r.tangent * s.transform;
+    }
     for (int k = 0; k < 15; ++k) {
       r.force[k] *= s.signs[k];
       if (input.with_tangent)
