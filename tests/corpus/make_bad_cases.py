@@ -37,7 +37,7 @@ EDITS = [
     ("unknown-key-root", "titel", [("title =", "titel =")]),
     ("unknown-key-mesh", "mesh.elements", [("[mesh]", "[mesh]\nelements = 3")]),
     ("unknown-key-drum", "load_curve[1].support.diamter", [('{ kind = "drum", diameter = 1830.0 }   # drum', '{ kind = "drum", diamter = 1830.0 }   # drum')]),
-    ("unknown-ply-name", "tyre.zones[0].outer.plies[1]", [('outer = { plies = ["belt1", "belt2"] }', 'outer = { plies = ["belt1", "belt3"] }')]),
+    ("unknown-ply-name", "tyre.zones[0].outer.plies[1]", [('plies = ["belt1", "belt2"], bending', 'plies = ["belt1", "belt3"], bending')]),
     ("unknown-support-kind", "load_curve[1].support.kind", [('{ kind = "drum", diameter = 1830.0 }   # drum', '{ kind = "cylinder", diameter = 1830.0 }   # drum')]),
     ("unknown-state", "rolling[0].states[0].state", [('{ state = "free" },\n  { state = "full_slip"', '{ state = "freewheel" },\n  { state = "full_slip"')]),
     # missing required keys
@@ -87,7 +87,7 @@ EDITS = [
                                                        "max_deflection = 40.0\npoints = 1000000\n\n[[load_curve]]\nname = \"drum\"")]),
     ("load-points-zero", "load_curve[0].points", [("max_deflection = 40.0\npoints = 4\n\n[[load_curve]]\nname = \"drum\"",
                                                     "max_deflection = 40.0\npoints = 0\n\n[[load_curve]]\nname = \"drum\"")]),
-    ("sweep-points-huge", "rolling[0].sweep.points", [("points = 3, hold", "points = 5000, hold")]),
+    ("sweep-points-huge", "rolling[0].sweep.points", [("to = 0.15, points = 3, hold", "to = 0.15, points = 5000, hold")]),
     ("deflection-beyond-rim", "load_curve[0].max_deflection", [("max_deflection = 40.0\npoints = 4\n\n[[load_curve]]\nname = \"drum\"",
                                                                  "max_deflection = 395.0\npoints = 4\n\n[[load_curve]]\nname = \"drum\"")]),
     ("deflection-negative", "load_curve[2].max_deflection", [("max_deflection = 40.0\npoints = 4\n\n# Footprint", "max_deflection = -40.0\npoints = 4\n\n# Footprint")]),
@@ -152,9 +152,9 @@ EDITS = [
                                                                   'name = "plane"\nsupport = { kind = "plane" }\ntheory = "nonlinear"\ndeflection_from = "inflated"')]),
     ("meridional-grading-unknown", "mesh.meridional_grading", [("half_model = true", 'half_model = true\nmeridional_grading = "uniform"')]),
     ("face-bending-negative", "tyre.zones[0].outer.bending_stiffness[1]",
-     [('outer = { plies = ["belt1", "belt2"] }', 'outer = { plies = ["belt1", "belt2"], bending_stiffness = [100.0, -1000.0] }')]),
+     [("bending_stiffness = [100.0, 300.0]", "bending_stiffness = [100.0, -1000.0]")]),
     ("face-bending-one-number", "tyre.zones[0].outer.bending_stiffness",
-     [('outer = { plies = ["belt1", "belt2"] }', 'outer = { plies = ["belt1", "belt2"], bending_stiffness = [1000.0] }')]),
+     [("bending_stiffness = [100.0, 300.0]", "bending_stiffness = [1000.0]")]),
 ]
 
 
@@ -197,14 +197,18 @@ def special(name, text):
 
 
 def main():
-    if OUT.exists():
-        shutil.rmtree(OUT)
-    OUT.mkdir(parents=True)
+    # Every file is made before the folder is touched: a stale edit stops the script with the old corpus intact.
+    files = {}
     for k, (name, expect, edits) in enumerate(EDITS, start=1):
         text = special(name, apply(BASE, edits, name))
         if text == BASE:
             raise SystemExit(f"{name}: no change")
-        (OUT / f"{k:03d}-{name}.toml").write_text(f"# expect: {expect}\n" + text)
+        files[f"{k:03d}-{name}.toml"] = f"# expect: {expect}\n" + text
+    if OUT.exists():
+        shutil.rmtree(OUT)
+    OUT.mkdir(parents=True)
+    for file_name, text in files.items():
+        (OUT / file_name).write_text(text)
     print(f"{len(EDITS)} files in {OUT}")
 
 
