@@ -91,7 +91,6 @@ FaceBendingForm::FaceBendingForm(const ShellMesh& mesh, const std::vector<Elemen
             if (!clamped || !nodes[inside].valid()) continue;
             nodes[beyond] = nodes[line_centre];
           }
-          const bool clamp_here = clamped && nodes[beyond].pair == nodes[line_centre].pair;
           nodes[across_before] = grid.node(i - dj, j - di);
           nodes[across_after] = grid.node(i + dj, j + di);
           for (int k : {across_before, across_after})
@@ -106,8 +105,8 @@ FaceBendingForm::FaceBendingForm(const ShellMesh& mesh, const std::vector<Elemen
               s.signs[3 * k + c] = nodes[k].mirrored && c == 0 ? -1.0 : 1.0;
             }
           }
-          s.clamped = clamp_here;
-          if (clamp_here) {
+          s.clamped = clamped;  // (past the test above, a clamped node lacks its node beyond)
+          if (clamped) {
             // x_g − x_e = Q (x_1 − x_e), t along the edge element's reference chord: in the reference,
             // X_g − X_e = −(X_1 − X_e) (no reference curvature at the edge).
             s.reference.col(beyond) = -s.reference.col(inside);
@@ -121,7 +120,7 @@ FaceBendingForm::FaceBendingForm(const ShellMesh& mesh, const std::vector<Elemen
           const double across = 0.5 * (s.reference.col(across_before).norm() + s.reference.col(across_after).norm());
           // A node on the symmetry plane carries half of its full-model energy.
           // So does a clamped edge node (half of the two elements' length is its own).
-          const double share = (symmetric_u_min && i == 0) || clamp_here ? 0.5 : 1.0;
+          const double share = (symmetric_u_min && i == 0) || clamped ? 0.5 : 1.0;
           s.bending.weights = second_difference_weights(h1, h2);
           s.bending.reference_curvature = line_curvature(s.bending, s.reference);
           s.bending.stiffness = share * stiffness * 0.5 * (h1 + h2) * across;
