@@ -155,6 +155,15 @@ EDITS = [
      [("bending_stiffness = [100.0, 300.0]", "bending_stiffness = [100.0, -1000.0]")]),
     ("face-bending-one-number", "tyre.zones[0].outer.bending_stiffness",
      [("bending_stiffness = [100.0, 300.0]", "bending_stiffness = [1000.0]")]),
+    # the rim flange (a table the smoke case does not have: each edit adds one)
+    ("rim-flange-radius-zero", "tyre.rim_flange.radius",
+     [("[tyre.tread]\n", "[tyre.rim_flange]\nradius = 0.0\nstiffness = 20.0\n\n[tyre.tread]\n")]),
+    ("rim-flange-missing-stiffness", "tyre.rim_flange.stiffness",
+     [("[tyre.tread]\n", "[tyre.rim_flange]\nradius = 9.5\n\n[tyre.tread]\n")]),
+    ("rim-flange-stiffness-huge", "tyre.rim_flange.stiffness",
+     [("[tyre.tread]\n", "[tyre.rim_flange]\nradius = 9.5\nstiffness = 1e9\n\n[tyre.tread]\n")]),
+    ("rim-flange-unknown-key", "tyre.rim_flange.radus",
+     [("[tyre.tread]\n", "[tyre.rim_flange]\nradus = 9.5\nstiffness = 20.0\n\n[tyre.tread]\n")]),
 ]
 
 

@@ -277,3 +277,27 @@ TEST(CaseReader, ReadsAFacesBendingStiffnessIntoItsZonesSections) {
 
 }  // namespace
 }  // namespace tirefem
+
+namespace tirefem {
+namespace {
+
+using namespace case_test;
+
+TEST(CaseReader, ReadsTheRimFlangeIntoTheTyreAndItsMesh) {
+  EXPECT_FALSE(read_case(kExample).tyre.rim_flange.has_value()) << "the main example leaves the flange out";
+  const Case c = parse_case(edited("[tyre.tread]\n", "[tyre.rim_flange]\nradius = 9.5\nstiffness = 20.0\n\n[tyre.tread]\n"),
+                            "case.toml");
+  ASSERT_TRUE(c.tyre.rim_flange.has_value());
+  EXPECT_EQ(c.tyre.rim_flange->radius, 9.5);
+  EXPECT_EQ(c.tyre.rim_flange->stiffness, 20.0);
+  EXPECT_NO_THROW(validate_case(c));
+  MeshSettings coarse = c.mesh;
+  coarse.circumferential_elements = 24;
+  coarse.meridional_elements = 12;
+  const TyreMesh tm = build_tyre_mesh(c.tyre, coarse);
+  ASSERT_TRUE(tm.rim_flange.has_value());
+  EXPECT_EQ(tm.rim_flange->stiffness, 20.0);
+}
+
+}  // namespace
+}  // namespace tirefem

@@ -28,25 +28,10 @@ constexpr double kStep = kFdStep;           // finite-difference step, mm
 constexpr double kTolerance = kFdTolerance; // relative error of the tangent / derivatives
 constexpr double kMargin = 1e-3;            // no tread point this close to g = 0 in the released case
 
-// The same support without its curvature term: shows how much the hessian contributes to the tangent.
-class WithoutCurvature final : public SupportSurface {
- public:
-  explicit WithoutCurvature(const SupportSurface& s) : s_(s) {}
-  Penetration penetration(const Eigen::Vector3d& x, double deflection) const override {
-    Penetration p = s_.penetration(x, deflection);
-    p.hessian.setZero();
-    return p;
-  }
-  double height(double x, double y, double deflection) const override { return s_.height(x, y, deflection); }
-
- private:
-  const SupportSurface& s_;
-};
-
 // The contact form alone, assembled over all DOFs (nothing fixed).
 using ContactOnly = SingleFormProblem<WinklerContactForm>;
 
-ContactOnly contact_only(const ShellMesh& mesh, const SupportSurface& support, double deflection) {
+ContactOnly contact_only(const ShellMesh& mesh, const RigidSurface& support, double deflection) {
   auto form = std::make_unique<WinklerContactForm>(mesh, patch_points(mesh), 1.3, support);
   form->set_deflection(deflection);
   return ContactOnly(mesh, std::move(form));

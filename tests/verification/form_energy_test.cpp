@@ -17,23 +17,6 @@
 namespace tirefem::verification {
 namespace {
 
-// |dΠ/dh − v·R| / |v·R| for the problem's free DOFs (v zero on the fixed ones).
-double energy_gradient_error(NonlinearProblem& problem, const Eigen::VectorXd& u, const Eigen::VectorXd& free_v,
-                             double load_factor, double h) {
-  const DofMap& dofs = problem.dofs();
-  Eigen::VectorXd v = Eigen::VectorXd::Zero(u.size());
-  dofs.scatter_add(free_v, v);
-  problem.evaluate(u, load_factor, false);
-  const double slope = dofs.gather(problem.system().residual()).dot(free_v);
-  const auto plus = problem.energy_change(u, u + h * v, load_factor);
-  const auto minus = problem.energy_change(u, u - h * v, load_factor);
-  EXPECT_TRUE(plus && minus) << "the problem should have a potential";
-  if (!plus || !minus) return 1.0;
-  const double fd = (plus->change - minus->change) / (2 * h);
-  std::printf("  dΠ/dh %.10e, v·R %.10e, relative error %.2e\n", fd, slope, std::abs(fd - slope) / std::abs(slope));
-  return std::abs(fd - slope) / std::abs(slope);
-}
-
 TEST(FormEnergy, InflatedTyreInContactIsTheGradientOfItsEnergy) {
   // Shell + pressure (closed by rim and symmetry plane: its energy is −p V) + contact, at the inflated
   // state pressed 12 mm onto the plane (a deformed state, many points in contact), single-loop region.

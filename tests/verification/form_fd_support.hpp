@@ -1,19 +1,22 @@
 #pragma once
 // Shared set-up for the finite-difference tangent tests of the contact forms (contact_tangent_test.cpp,
 // tread_friction_tangent_test.cpp): a tyre-like cylindrical patch with tread points, one form alone as a
-// nonlinear problem over all DOFs, central differences of its residual, and a guard that runs the many
-// tiny assemblies on one thread.
+// nonlinear problem over all DOFs, central differences of its residual and of its energy, and a guard that
+// runs the many tiny assemblies on one thread.
 //
 // Mesh: carcass at r = 280, breaker at 283, tread 7 mm, axis 290 mm above the road, so the undeformed
 // tread touches z = 0 at φ = 0; 6 × 10 elements over x ∈ [−40, 40] mm, φ ∈ [−0.35, 0.35] rad (y = r sin φ
 // grows with φ), 3 × 3 tread points each. The tread points' mesh parameters are (u, v) = (x, φ).
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <random>
 #include <utility>
 #include <vector>
 
 #include <omp.h>
+
+#include <gtest/gtest.h>
 
 #include <Eigen/Dense>
 
@@ -55,6 +58,21 @@ class SingleThread {
 
  private:
   int threads_;
+};
+
+// A rigid surface without its curvature term (its Hessian dropped): shows how much that term contributes
+// to a contact tangent.
+class WithoutCurvature final : public RigidSurface {
+ public:
+  explicit WithoutCurvature(const RigidSurface& s) : s_(s) {}
+  Penetration penetration(const Eigen::Vector3d& x, double deflection) const override {
+    Penetration p = s_.penetration(x, deflection);
+    p.hessian.setZero();
+    return p;
+  }
+
+ private:
+  const RigidSurface& s_;
 };
 
 // One form alone, assembled over all DOFs of the mesh (nothing fixed); `form` stays usable to set the
@@ -107,6 +125,23 @@ inline Eigen::VectorXd random_vector(int n, unsigned seed, double scale) {
 // max |a − b| / max |b|.
 inline double max_relative_error(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
   return (a - b).cwiseAbs().maxCoeff() / b.cwiseAbs().maxCoeff();
+}
+
+// |dΠ/dh − v·R| / |v·R| for the problem's free DOFs (v zero on the fixed ones).
+inline double energy_gradient_error(NonlinearProblem& problem, const Eigen::VectorXd& u,
+                                    const Eigen::VectorXd& free_v, double load_factor, double h) {
+  const DofMap& dofs = problem.dofs();
+  Eigen::VectorXd v = Eigen::VectorXd::Zero(u.size());
+  dofs.scatter_add(free_v, v);
+  problem.evaluate(u, load_factor, false);
+  const double slope = dofs.gather(problem.system().residual()).dot(free_v);
+  const auto plus = problem.energy_change(u, u + h * v, load_factor);
+  const auto minus = problem.energy_change(u, u - h * v, load_factor);
+  EXPECT_TRUE(plus && minus) << "the problem should have a potential";
+  if (!plus || !minus) return 1.0;
+  const double fd = (plus->change - minus->change) / (2 * h);
+  std::printf("  dΠ/dh %.10e, v·R %.10e, relative error %.2e\n", fd, slope, std::abs(fd - slope) / std::abs(slope));
+  return std::abs(fd - slope) / std::abs(slope);
 }
 
 }  // namespace tirefem::verification

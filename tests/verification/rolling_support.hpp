@@ -1,7 +1,8 @@
 #pragma once
 // Shared set-up of the rolling and cornering tests: the example tyre with a stiffened structure (the
-// brush-model limits), and the rim's reaction (the residual of shell and pressure at the clamped bead DOFs)
-// as a force and a moment about the axle centre.
+// brush-model limits), and the rim's reaction (the residual of shell and pressure at the clamped bead DOFs,
+// plus the rim flange's contact forces when the tyre leans on one) as a force and a moment about the axle
+// centre.
 #include <memory>
 #include <vector>
 
@@ -9,6 +10,7 @@
 
 #include "contact_support.hpp"
 #include "tirefem/forms/pressure_form.hpp"
+#include "tirefem/forms/rim_flange_form.hpp"
 #include "tirefem/forms/shell_internal_force.hpp"
 
 namespace tirefem::verification {
@@ -41,6 +43,15 @@ inline RimReaction rim_reaction(const TyreMesh& tm, double pressure, const Eigen
   std::vector<std::unique_ptr<Form>> forms;
   forms.push_back(std::make_unique<ShellInternalForce>(tm.mesh, tm.sections, Kinematics::nonlinear));
   forms.push_back(std::make_unique<PressureForm>(tm.mesh, tm.pressure_elements, pressure, Kinematics::nonlinear, true));
+  // The flange is part of the rim: its forces on the tyre count, and so does what the clamp supplies
+  // against the share of them that the bead's elements pass on to the bead nodes.
+  const RimFlangeForm* flange = nullptr;
+  if (tm.rim_flange) {
+    auto f = std::make_unique<RimFlangeForm>(
+        tm.mesh, place_rim_flange(tm.mesh, tm.axis_z, !tm.half_model, tm.rim_flange->radius), tm.rim_flange->stiffness);
+    flange = f.get();
+    forms.push_back(std::move(f));
+  }
   NonlinearProblem problem(dofs, std::move(forms));
   problem.evaluate(u, 1.0, false);
   const Eigen::VectorXd& r = problem.system().residual();
@@ -56,6 +67,11 @@ inline RimReaction rim_reaction(const TyreMesh& tm, double pressure, const Eigen
     out.force += f;
     out.moment += (x - centre).cross(f);
   }
+  if (flange)
+    for (const TreadPointState& s : flange->evaluate(u)) {
+      out.force += s.force;
+      out.moment += (s.position - centre).cross(s.force);
+    }
   return out;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // The tyre wall's forms: the three-layer shell (MODEL.md §3) and, where the case gives its faces a
-// bending stiffness, their bending (forms/face_bending_form.hpp).
+// bending stiffness, their bending (forms/face_bending_form.hpp), and where the tyre leans on a rim flange,
+// that contact (forms/rim_flange_form.hpp).
 #include <memory>
 #include <vector>
 

@@ -48,6 +48,13 @@ struct Zone {
   double core_normal_modulus = 0.0;  // interlayer through-thickness modulus, MPa
 };
 
+// The rim flange's curl (road/rim_flange.hpp): a rigid torus tangent to the outer face at the bead, on
+// which the lower sidewall leans when it bends over the rim.
+struct RimFlangeDescription {
+  double radius = 9.5;     // curl radius, mm (ETRTO J flange: 9.5)
+  double stiffness = 2.0;  // Winkler stiffness of the rubber between the outer face and the flange, N/mm³
+};
+
 struct TyreDescription {
   std::string name;
   std::vector<Eigen::Vector2d> profile;  // carcass line (x, r), equator (x = 0) → bead, x ≥ 0
@@ -57,6 +64,7 @@ struct TyreDescription {
   double tread_end_s = 0.0;          // tread edge, mm from the equator; no tread beyond
   double tread_stiffness = 0.0;      // Winkler stiffness kp, N/mm³ (per unit area of the outer face)
   double tread_shear_modulus = 0.0;  // effective tread rubber shear modulus G, MPa
+  std::optional<RimFlangeDescription> rim_flange;  // none: the outer face is free up to the clamped bead
 };
 
 struct MeshSettings {

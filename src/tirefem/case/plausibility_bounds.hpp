@@ -21,6 +21,8 @@ inline constexpr Bound kThickness{0.01, 100.0, "mm"};
 inline constexpr Bound kTreadHeight{0.0, 100.0, "mm"};
 // Winkler tread stiffness kp (N/mm³, per unit area of the outer face): ~E_tread / hp ≈ 0.1 .. 5.
 inline constexpr Bound kTreadStiffness{1e-3, 100.0, "N/mm³"};
+// Rim flange curl radius (mm): a passenger J flange 9.5, a truck flange ~25.
+inline constexpr Bound kFlangeRadius{1.0, 100.0, "mm"};
 // Inflation pressure (MPa): passenger ~0.2, truck ~0.9, aircraft ~1.5.
 inline constexpr Bound kPressure{0.0, 2.0, "MPa"};
 // Diagonal terms of a directly given face stiffness A (N/mm): the modulus bound times the thickness bound.

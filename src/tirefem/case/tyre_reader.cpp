@@ -1,5 +1,6 @@
 #include "tirefem/case/tyre_reader.hpp"
 
+#include "tirefem/case/plausibility_bounds.hpp"
 #include "tirefem/case/profile_reader.hpp"
 #include "tirefem/case/tread_reader.hpp"
 #include "tirefem/case/zone_reader.hpp"
@@ -9,7 +10,7 @@ namespace tirefem::case_reading {
 
 TyreRead read_tyre(TomlFields& f, const toml::node& n, const std::string& path) {
   const toml::table& t =
-      f.table(n, path, {"name", "cord_rubber_rule", "profile", "plies", "zones", "interlayer", "tread"});
+      f.table(n, path, {"name", "cord_rubber_rule", "profile", "plies", "zones", "interlayer", "tread", "rim_flange"});
   TyreRead r;
   TyreDescription& d = r.tyre;
   if (const toml::node* v = f.get(t, path, "name")) d.name = f.string(*v, join(path, "name"));
@@ -20,6 +21,12 @@ TyreRead read_tyre(TomlFields& f, const toml::node& n, const std::string& path) 
   const std::map<std::string, Ply> plies = read_plies(f, t, path);
   d.zones = read_zones(f, t, path, plies, default_rule);
   r.shear_modulus_given = read_interlayer_and_tread(f, t, path, d);
+  if (const toml::node* v = f.get(t, path, "rim_flange")) {
+    const std::string fp = join(path, "rim_flange");
+    const toml::table& ft = f.table(*v, fp, {"radius", "stiffness"});
+    d.rim_flange = RimFlangeDescription{f.req_number(ft, fp, "radius", " (mm)"),
+                                        f.req_number(ft, fp, "stiffness", " (N/mm³)")};
+  }
   return r;
 }
 
@@ -27,6 +34,10 @@ double check_tyre(const FieldChecker& c, const TyreDescription& t, bool rolls) {
   const double length = check_profile(c, t.profile, "tyre.profile.points");
   check_zones(c, t.zones, length, "tyre.zones");
   check_interlayer_and_tread(c, t, length, rolls);
+  if (t.rim_flange) {
+    c.plausible(t.rim_flange->radius, kFlangeRadius, "tyre.rim_flange.radius");
+    c.plausible(t.rim_flange->stiffness, kTreadStiffness, "tyre.rim_flange.stiffness");
+  }
   return length;
 }
 

@@ -43,7 +43,7 @@ std::vector<TreadPoint> make_tread_points(const ShellMesh& mesh, const std::vect
 }
 
 WinklerContactForm::WinklerContactForm(const ShellMesh& mesh, std::vector<TreadPoint> points,
-                                       double stiffness, const SupportSurface& support)
+                                       double stiffness, const RigidSurface& support)
     : mesh_(mesh), points_(std::move(points)), stiffness_(stiffness), support_(support) {
   if (!(stiffness > 0)) throw std::invalid_argument("the tread stiffness kp must be > 0");
   std::stable_sort(points_.begin(), points_.end(),

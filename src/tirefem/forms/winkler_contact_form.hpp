@@ -54,7 +54,7 @@ struct TreadPointState {
 class WinklerContactForm final : public Form {
  public:
   WinklerContactForm(const ShellMesh& mesh, std::vector<TreadPoint> points, double stiffness,
-                     const SupportSurface& support);
+                     const RigidSurface& support);
 
   void add_pattern(PatternBuilder& pattern) const override;
   void assemble(const FormInput& input, SparseSystem& system) const override;
@@ -74,7 +74,7 @@ class WinklerContactForm final : public Form {
 
   const std::vector<char>& frozen_region() const { return frozen_; }  // empty when released
   double stiffness() const { return stiffness_; }
-  const SupportSurface& support() const { return support_; }
+  const RigidSurface& support() const { return support_; }
 
   // {g > 0} at the displacement u: the region the outer loop proposes.
   std::vector<char> region(const Eigen::VectorXd& u) const;
@@ -90,7 +90,7 @@ class WinklerContactForm final : public Form {
   std::vector<TreadPoint> points_;
   std::vector<int> element_begin_;  // points_ sorted by element; [begin[k], begin[k+1]) of group k
   double stiffness_;
-  const SupportSurface& support_;
+  const RigidSurface& support_;
   double deflection_ = 0.0;
   std::vector<char> frozen_;
 };

@@ -30,11 +30,17 @@ struct TravelCoordinate {
   Eigen::Matrix3d hessian = Eigen::Matrix3d::Zero();
 };
 
-class SupportSurface {
+// Any rigid surface a Winkler layer can be pressed against (forms/winkler_contact_form.hpp): the road
+// supports below and the rim flange (tyre/rim_flange.hpp).
+class RigidSurface {
  public:
-  virtual ~SupportSurface() = default;
-  // Penetration of the point x when the support has been moved up by `deflection`.
+  virtual ~RigidSurface() = default;
+  // Penetration of the point x; a support moved up by `deflection` (a surface fixed to the axle ignores it).
   virtual Penetration penetration(const Eigen::Vector3d& x, double deflection) const = 0;
+};
+
+class SupportSurface : public RigidSurface {
+ public:
   // Travel coordinate of x (the road translates in y, the drum turns about its axis).
   virtual TravelCoordinate travel(const Eigen::Vector3d& x, double deflection) const;
   // Lateral coordinate η of x (MODEL.md §7): across the support's motion in the support surface, so that

@@ -95,6 +95,7 @@ TyreMesh build_tyre_mesh(const TyreDescription& tyre, const MeshSettings& settin
 
   TyreMesh result;
   result.half_model = settings.half_model;
+  result.rim_flange = tyre.rim_flange;
   result.meridional_grading = settings.meridional_grading;
   result.profile = settings.half_model ? half : half.mirrored();
   std::vector<double> s_values;

@@ -11,6 +11,7 @@
 // Circumferential stations: circumferential_stations(n, refinement), refined around φ = 0 (the patch).
 // Half model: s from 0 (equator) to L (bead). Full model: s from −L to L on the mirrored profile, with
 // twice meridional_elements elements.
+#include <optional>
 #include <vector>
 
 #include "tirefem/case/case.hpp"
@@ -34,6 +35,7 @@ struct TyreMesh {
   double axis_z = 0.0;
   MeridianProfile profile;  // the profile the mesh was built on (mirrored in the full model)
   bool half_model = true;
+  std::optional<RimFlangeDescription> rim_flange;  // the tyre's, if it leans on one (forms/rim_flange_form.hpp)
   MeshSettings::MeridionalGrading meridional_grading = MeshSettings::MeridionalGrading::zones;
 
   // Meridian arc length of a node pair.
