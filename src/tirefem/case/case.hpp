@@ -51,8 +51,8 @@ struct Zone {
 // The rim flange's curl (road/rim_flange.hpp): a rigid torus tangent to the outer face at the bead, on
 // which the lower sidewall leans when it bends over the rim.
 struct RimFlangeDescription {
-  double radius = 9.5;     // curl radius, mm (ETRTO J flange: 9.5)
-  double stiffness = 2.0;  // Winkler stiffness of the rubber between the outer face and the flange, N/mm³
+  double radius = 9.5;      // curl radius, mm (typical of a passenger J flange)
+  double stiffness = 20.0;  // Winkler stiffness of the rubber between the outer face and the flange, N/mm³
 };
 
 struct TyreDescription {
