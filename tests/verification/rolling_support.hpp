@@ -10,6 +10,7 @@
 
 #include "contact_support.hpp"
 #include "tirefem/forms/pressure_form.hpp"
+#include "tirefem/analysis/tyre_shell_forms.hpp"
 #include "tirefem/forms/rim_flange_form.hpp"
 #include "tirefem/forms/shell_internal_force.hpp"
 
@@ -45,13 +46,9 @@ inline RimReaction rim_reaction(const TyreMesh& tm, double pressure, const Eigen
   forms.push_back(std::make_unique<PressureForm>(tm.mesh, tm.pressure_elements, pressure, Kinematics::nonlinear, true));
   // The flange is part of the rim: its forces on the tyre count, and so does what the clamp supplies
   // against the share of them that the bead's elements pass on to the bead nodes.
-  const RimFlangeForm* flange = nullptr;
-  if (tm.rim_flange) {
-    auto f = std::make_unique<RimFlangeForm>(
-        tm.mesh, place_rim_flange(tm.mesh, tm.axis_z, !tm.half_model, tm.rim_flange->radius), tm.rim_flange->stiffness);
-    flange = f.get();
-    forms.push_back(std::move(f));
-  }
+  std::unique_ptr<RimFlangeForm> f = make_rim_flange_form(tm);
+  const RimFlangeForm* flange = f.get();
+  if (f) forms.push_back(std::move(f));
   NonlinearProblem problem(dofs, std::move(forms));
   problem.evaluate(u, 1.0, false);
   const Eigen::VectorXd& r = problem.system().residual();

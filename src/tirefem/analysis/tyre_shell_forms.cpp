@@ -12,9 +12,13 @@ void add_tyre_shell_forms(std::vector<std::unique_ptr<Form>>& forms, const TyreM
     // The bead (u_max, and u_min on the full model) is clamped: held, and the faces' slope with it.
     forms.push_back(std::make_unique<FaceBendingForm>(tm.mesh, tm.sections, kinematics, tm.half_model,
                                                       ClampedUEdges{!tm.half_model, true}));
-  if (tm.rim_flange)
-    forms.push_back(std::make_unique<RimFlangeForm>(
-        tm.mesh, place_rim_flange(tm.mesh, tm.axis_z, !tm.half_model, tm.rim_flange->radius), tm.rim_flange->stiffness));
+  if (auto flange = make_rim_flange_form(tm)) forms.push_back(std::move(flange));
+}
+
+std::unique_ptr<RimFlangeForm> make_rim_flange_form(const TyreMesh& tm) {
+  if (!tm.rim_flange) return nullptr;
+  return std::make_unique<RimFlangeForm>(
+      tm.mesh, place_rim_flange(tm.mesh, tm.axis_z, !tm.half_model, tm.rim_flange->radius), tm.rim_flange->stiffness);
 }
 
 }  // namespace tirefem

@@ -6,10 +6,14 @@
 #include <vector>
 
 #include "tirefem/element/element_geometry.hpp"
+#include "tirefem/forms/rim_flange_form.hpp"
 #include "tirefem/solver/form.hpp"
 #include "tirefem/tyre/tyre_mesh.hpp"
 
 namespace tirefem {
+
+// The rim flange's contact of the tyre's mesh (none if the tyre has no flange).
+std::unique_ptr<RimFlangeForm> make_rim_flange_form(const TyreMesh& tm);
 
 void add_tyre_shell_forms(std::vector<std::unique_ptr<Form>>& forms, const TyreMesh& tm, Kinematics kinematics);
 

@@ -27,7 +27,6 @@ class RimFlangeForm final : public Form {
 
   // The flange's force on the tyre at each point (TreadPointState::force), for the rim's reaction.
   std::vector<TreadPointState> evaluate(const Eigen::VectorXd& u) const { return contact_.evaluate(u); }
-  const RimFlange& flange() const { return flange_; }
   int point_count() const { return static_cast<int>(contact_.points().size()); }
 
  private:

@@ -2,7 +2,7 @@
 // The rim flange: the bead is clamped to the rim (MODEL.md §2), and above the clamped line the lower
 // sidewall leans on the flange's curl. The curl is a rigid torus about the wheel axis, a circle of radius
 // R in the meridian plane, placed tangent to the outer face at the bead on the side away from the tyre (so
-// the inflated-free reference state just touches it there; the tyre data's "the carcass leaves the rim
+// the uninflated reference state just touches it there, on the tyre data's "the carcass leaves the rim
 // flange" line). The full model has one at each bead, mirror images in x = 0.
 //
 // Penetration of a point X: with a its axial coordinate, ρ its distance from the axis and c = (cx, cr) the

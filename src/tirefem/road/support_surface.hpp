@@ -31,7 +31,7 @@ struct TravelCoordinate {
 };
 
 // Any rigid surface a Winkler layer can be pressed against (forms/winkler_contact_form.hpp): the road
-// supports below and the rim flange (tyre/rim_flange.hpp).
+// supports below and the rim flange (road/rim_flange.hpp).
 class RigidSurface {
  public:
   virtual ~RigidSurface() = default;
