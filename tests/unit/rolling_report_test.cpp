@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <numbers>
@@ -121,7 +122,7 @@ TEST(RollingReport, StatesTableMarksUndefinedAndFailedValuesNaN) {
                                       "max_traction_MPa", "contact_iterations", "newton_iterations",
                                       "factorizations", "solves", "time_s", "converged", "slip_angle_deg",
                                       "camber_deg", "Fx_N", "Fy_N", "Fz_N", "Mz_Nmm", "overturning_moment_Nmm",
-                                      "pneumatic_trail_mm"}));
+                                      "pneumatic_trail_mm", "flange_axial_force_N", "flange_contact_fraction"}));
   ASSERT_EQ(t.rows.size(), 4u);
   const std::vector<double> first(t.rows[0].begin(), t.rows[0].begin() + 23);
   EXPECT_EQ(first, (std::vector<double>{0, 0, 280, 268.5, 3700, 0, -50, 0.5, 12000, 0.15, 3, 17, 18, 2, 1.5, 1,
@@ -154,7 +155,8 @@ TEST(RollingReport, SweepTableAndPlot) {
   const CsvTable t = slip_sweep_table(r);
   EXPECT_EQ(t.columns, (std::vector<std::string>{"slip", "rolling_radius_mm", "deflection_mm", "Qz_N", "Qy_N",
                                                  "Mx_Nmm", "Qy_over_Qz", "stick_area_fraction", "contact_iterations",
-                                                 "newton_iterations", "factorizations", "time_s"}));
+                                                 "newton_iterations", "factorizations", "time_s",
+                                                 "flange_axial_force_N", "flange_contact_fraction"}));
   ASSERT_EQ(t.rows.size(), 3u);
   EXPECT_EQ(t.rows[0][0], -0.02);
   EXPECT_EQ(t.rows[0][2], r.sweep[0].deflection_mm);
@@ -333,6 +335,40 @@ TEST(RollingReport, SummaryKeys) {
   for (const char* key :
        {"drum_diameter_mm", "target_Qz_N", "effective_rolling_radius_mm", "slip_stiffness_N", "sweep"})
     EXPECT_FALSE(s.contains(key)) << key;
+}
+
+// A full model's two flanges: each state's summary lists them, its table row carries the larger axial
+// force and the smaller contact fraction; without flanges there is neither key nor figure.
+TEST(RollingReport, RimFlangeLoads) {
+  RollingResult r = rolling(false);
+  RimFlangeLoad left{-1, 2000.0, 150.0, 0.8, 1.0}, right{1, 2500.0, 90.0, 0.6, 0.75};
+  r.states[0].figures.rim_flanges = {{"left", left}, {"right", right}};
+  r.sweep[0].figures.rim_flanges = r.states[0].figures.rim_flanges;
+  const toml::table s = rolling_summary(r);
+  const toml::table& free = *(*s["states"].as_array())[0].as_table();
+  const toml::array& flanges = *free["rim_flanges"].as_array();
+  ASSERT_EQ(flanges.size(), 2u);
+  const toml::table& second = *flanges[1].as_table();
+  EXPECT_EQ(second["side"].value<std::string>(), "right");
+  EXPECT_EQ(second["axial_force_N"].value<double>(), 2500.0);
+  EXPECT_EQ(second["radial_force_N"].value<double>(), 90.0);
+  EXPECT_EQ(second["peak_pressure_MPa"].value<double>(), 0.6);
+  EXPECT_EQ(second["contact_fraction"].value<double>(), 0.75);
+  EXPECT_FALSE((*(*s["states"].as_array())[1].as_table()).contains("rim_flanges"));
+  EXPECT_TRUE((*(*s["sweep"].as_array())[0].as_table()).contains("rim_flanges"));
+
+  const CsvTable t = rolling_states_table(r);
+  const auto column = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(t.columns.begin(), t.columns.end(), name) - t.columns.begin());
+  };
+  ASSERT_LT(column("flange_axial_force_N"), t.columns.size());
+  ASSERT_LT(column("flange_contact_fraction"), t.columns.size());
+  EXPECT_EQ(t.rows[0][column("flange_axial_force_N")], 2500.0);
+  EXPECT_EQ(t.rows[0][column("flange_contact_fraction")], 0.75);
+  EXPECT_TRUE(std::isnan(t.rows[1][column("flange_axial_force_N")])) << "no flange: no figure";
+  const CsvTable sweep = slip_sweep_table(r);
+  EXPECT_EQ(sweep.rows[0][sweep.columns.size() - 2], 2500.0);
+  EXPECT_TRUE(std::isnan(sweep.rows[1].back()));
 }
 
 }  // namespace

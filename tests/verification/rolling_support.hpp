@@ -64,11 +64,19 @@ inline RimReaction rim_reaction(const TyreMesh& tm, double pressure, const Eigen
     out.force += f;
     out.moment += (x - centre).cross(f);
   }
-  if (flange)
-    for (const TreadPointState& s : flange->evaluate(u)) {
-      out.force += s.force;
-      out.moment += (s.position - centre).cross(s.force);
+  // The form hands a point's force to its element's outer nodes as N_k f, so on the tyre it acts at the
+  // nodes' interpolated position (the point's lift onto the round wall is a fixed offset, like the tread
+  // height, and carries no moment to the shell).
+  if (flange) {
+    const std::vector<TreadPointState> states = flange->evaluate(u);
+    for (std::size_t q = 0; q < states.size(); ++q) {
+      const TreadPoint& p = flange->points()[q];
+      Eigen::Vector3d x = Eigen::Vector3d::Zero();
+      for (int k = 0; k < 4; ++k) x += p.shape[k] * (tm.mesh.outer_nodes[p.pairs[k]] + u.segment<3>(6 * p.pairs[k] + 3));
+      out.force += states[q].force;
+      out.moment += (x - centre).cross(states[q].force);
     }
+  }
   return out;
 }
 

@@ -20,6 +20,7 @@
 
 #include "tirefem/analysis/contact_iteration.hpp"
 #include "tirefem/analysis/footprint.hpp"
+#include "tirefem/forms/rim_flange_form.hpp"
 #include "tirefem/forms/tread_friction_form.hpp"
 
 namespace tirefem {
@@ -44,6 +45,13 @@ struct RollingFigures {
   double overturning_moment_Nmm = 0.0, rolling_moment_Nmm = 0.0, aligning_moment_Nmm = 0.0;
   std::optional<double> pneumatic_trail_mm;
   Eigen::Vector2d centre_of_pressure_mm = Eigen::Vector2d::Zero();
+  // The rim flanges' loads (forms/rim_flange_form.hpp), when the tyre leans on flanges: on a half model
+  // one, which each flange carries ("each"); on a full one both, named by the W-axis side ("left": +Y).
+  struct Flange {
+    std::string side;
+    RimFlangeLoad load;
+  };
+  std::vector<Flange> rim_flanges;
 };
 
 // The W-axis frame of a rolling state: C and the unit axes, in the model's coordinates.

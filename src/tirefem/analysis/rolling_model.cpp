@@ -56,7 +56,7 @@ RollingModel::RollingModel(const TyreMesh& tm, const TyreDescription& tyre, cons
   DofMap dofs(tm.mesh.dof_count());
   dofs.fix(tm.fixed_dofs);
   std::vector<std::unique_ptr<Form>> forms;
-  add_tyre_shell_forms(forms, tm, Kinematics::nonlinear);
+  flange_ = add_tyre_shell_forms(forms, tm, Kinematics::nonlinear);
   forms.push_back(std::make_unique<PressureForm>(tm.mesh, tm.pressure_elements, inflation.pressure,
                                                  Kinematics::nonlinear, /*symmetrize=*/false));
   auto contact = std::make_unique<WinklerContactForm>(tm.mesh, fp.tread_points, tyre.tread_stiffness, *support_);
@@ -288,8 +288,13 @@ void RollingModel::set_deflection(double deflection) {
 }
 
 RollingFigures RollingModel::figures(const Eigen::VectorXd& u) const {
-  return rolling_figures(contact_->points(), contact_->evaluate(u), friction_->evaluate(u), tm_.axis_z,
-                         tm_.half_model, result_.reverse, wheel_frame(*support_, deflection_, result_.reverse));
+  const WheelFrame frame = wheel_frame(*support_, deflection_, result_.reverse);
+  RollingFigures f = rolling_figures(contact_->points(), contact_->evaluate(u), friction_->evaluate(u), tm_.axis_z,
+                                     tm_.half_model, result_.reverse, frame);
+  if (flange_)
+    for (const RimFlangeLoad& load : flange_->loads(u))
+      f.rim_flanges.push_back({tm_.half_model ? "each" : load.side * frame.y.x() > 0 ? "left" : "right", load});
+  return f;
 }
 
 double RollingModel::static_full_stick_Qy(double rolling_radius) {

@@ -90,6 +90,7 @@ class RollingModel {
   CamberedPlane* cambered_ = nullptr;  // the support when it is a plane (camber allowed)
   WinklerContactForm* contact_ = nullptr;
   TreadFrictionForm* friction_ = nullptr;
+  const RimFlangeForm* flange_ = nullptr;  // the rim flange's contact, if the tyre has one
   std::unique_ptr<NonlinearProblem> problem_;
   std::unique_ptr<NewtonSolver> newton_;
   Eigen::VectorXd base_;  // the static footprint

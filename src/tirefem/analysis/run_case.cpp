@@ -25,6 +25,7 @@
 #include "tirefem/io/results_folder.hpp"
 #include "tirefem/results/footprint_report.hpp"
 #include "tirefem/results/inflation_report.hpp"
+#include "tirefem/results/rim_flange_report.hpp"
 #include "tirefem/results/rolling_report.hpp"
 #include "tirefem/solver/blas_kernel.hpp"
 
@@ -189,6 +190,11 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
                           {"max_carcass_cord_strain", s.max_carcass_cord_strain},
                           {"max_belt_cord_strain", s.max_belt_cord_strain},
                           {"newton_iterations", r.counters.newton_iterations}};
+    if (!s.rim_flanges.empty()) {
+      toml::array flanges;
+      for (const RimFlangeLoad& l : s.rim_flanges) flanges.push_back(rim_flange_table(static_flange_side(tm.half_model, l), l));
+      inflation.insert("rim_flanges", std::move(flanges));
+    }
     inflation.insert("solver", counters_table(r.counters));
     summary.insert("inflation", std::move(inflation));
     report(progress,
@@ -196,6 +202,11 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
                        "carcass {:.2f} N, belt {:.2f} N ({} Newton iterations, {:.2f} s)",
                        s.crown_radius_growth_mm, s.section_width_growth_mm, s.max_carcass_cord_force_N,
                        s.max_belt_cord_force_N, r.counters.newton_iterations, r.counters.wall_s));
+    for (const RimFlangeLoad& l : s.rim_flanges)
+      report(progress, fmt::format("  rim flange ({}): axial push {:.0f} N, peak pressure {:.3f} MPa, in contact "
+                                   "over {:.0f}% of the round",
+                                   static_flange_side(tm.half_model, l), l.axial_force_N, l.peak_pressure_MPa,
+                                   100 * l.contact_fraction));
     times.end();
   }
 

@@ -6,13 +6,17 @@
 
 namespace tirefem {
 
-void add_tyre_shell_forms(std::vector<std::unique_ptr<Form>>& forms, const TyreMesh& tm, Kinematics kinematics) {
+const RimFlangeForm* add_tyre_shell_forms(std::vector<std::unique_ptr<Form>>& forms, const TyreMesh& tm,
+                                          Kinematics kinematics) {
   forms.push_back(std::make_unique<ShellInternalForce>(tm.mesh, tm.sections, kinematics));
   if (has_face_bending(tm.sections))
     // The bead (u_max, and u_min on the full model) is clamped: held, and the faces' slope with it.
     forms.push_back(std::make_unique<FaceBendingForm>(tm.mesh, tm.sections, kinematics, tm.half_model,
                                                       ClampedUEdges{!tm.half_model, true}));
-  if (auto flange = make_rim_flange_form(tm)) forms.push_back(std::move(flange));
+  std::unique_ptr<RimFlangeForm> flange = make_rim_flange_form(tm);
+  const RimFlangeForm* added = flange.get();
+  if (flange) forms.push_back(std::move(flange));
+  return added;
 }
 
 std::unique_ptr<RimFlangeForm> make_rim_flange_form(const TyreMesh& tm) {

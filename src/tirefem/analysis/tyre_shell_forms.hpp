@@ -15,6 +15,8 @@ namespace tirefem {
 // The rim flange's contact of the tyre's mesh (none if the tyre has no flange).
 std::unique_ptr<RimFlangeForm> make_rim_flange_form(const TyreMesh& tm);
 
-void add_tyre_shell_forms(std::vector<std::unique_ptr<Form>>& forms, const TyreMesh& tm, Kinematics kinematics);
+// Returns the rim flange's form among those added (null without a flange), to report its load.
+const RimFlangeForm* add_tyre_shell_forms(std::vector<std::unique_ptr<Form>>& forms, const TyreMesh& tm,
+                                          Kinematics kinematics);
 
 }  // namespace tirefem

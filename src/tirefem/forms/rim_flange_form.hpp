@@ -13,6 +13,19 @@
 
 namespace tirefem {
 
+// What one flange carries in a state: the tyre's force on it, split into the push along the wheel axis
+// (outward, away from the tyre's mid-plane, > 0 when the bead presses the flange as inflation does) and
+// the in-plane resultant (the flange's share of the wheel load), its largest contact pressure, and the
+// share of the circumference where the lower sidewall touches it (below 1: the wall has lifted off the
+// flange over part of its round, e.g. on the side away from a large lateral force).
+struct RimFlangeLoad {
+  int side = 1;  // the flange at x > 0 (+1) or x < 0 (−1), x the wheel axis
+  double axial_force_N = 0.0;
+  double radial_force_N = 0.0;
+  double peak_pressure_MPa = 0.0;
+  double contact_fraction = 0.0;  // element columns (round the axis) with a point in contact / all
+};
+
 class RimFlangeForm final : public Form {
  public:
   RimFlangeForm(const ShellMesh& mesh, RimFlange flange, double stiffness);
@@ -28,10 +41,14 @@ class RimFlangeForm final : public Form {
   // The flange's force on the tyre at each point (TreadPointState::force), for the rim's reaction.
   std::vector<TreadPointState> evaluate(const Eigen::VectorXd& u) const { return contact_.evaluate(u); }
   int point_count() const { return static_cast<int>(contact_.points().size()); }
+  const std::vector<TreadPoint>& points() const { return contact_.points(); }  // in evaluate()'s order
+  // The load on each flange the form's points reach (one on a half model, two on a full one), at u.
+  std::vector<RimFlangeLoad> loads(const Eigen::VectorXd& u) const;
 
  private:
   RimFlange flange_;  // before contact_, which refers to it
   WinklerContactForm contact_;
+  int u_elements_ = 0, v_elements_ = 0;  // of the mesh: element e lies in column e / u_elements_
 };
 
 }  // namespace tirefem

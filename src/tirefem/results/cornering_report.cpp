@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "tirefem/results/rim_flange_report.hpp"
 #include "tirefem/road/support_surface.hpp"
 
 namespace tirefem {
@@ -25,14 +26,16 @@ CsvTable points_table(const RollingResult& r, const std::vector<SweepPoint>& poi
       "slip kappa = Re/Rk - 1; pneumatic_trail = -Mz/Fy (nan where |Fy| <= 1e-3 Fz)"};
   t.columns = {"slip_angle_deg", "camber_deg", "slip", "rolling_radius_mm", "deflection_mm", "Fx_N", "Fy_N",
                "Fz_N", "Mz_Nmm", "overturning_moment_Nmm", "pneumatic_trail_mm", "Fy_over_Fz",
-               "stick_area_fraction", "newton_iterations", "factorizations", "time_s"};
+               "stick_area_fraction", "newton_iterations", "factorizations", "time_s", "flange_axial_force_N",
+               "flange_contact_fraction"};
   for (const SweepPoint& p : points) {
     const RollingFigures& f = p.figures;
     t.rows.push_back({p.slip_angle_deg, p.camber_deg, p.slip, p.rolling_radius_mm, p.deflection_mm, f.Fx_N, f.Fy_N,
                       f.Fz_N, f.aligning_moment_Nmm, f.overturning_moment_Nmm,
                       f.pneumatic_trail_mm.value_or(kNaN), f.Fz_N != 0.0 ? f.Fy_N / f.Fz_N : kNaN,
                       f.stick_area_fraction, static_cast<double>(p.counts.newton_iterations),
-                      static_cast<double>(p.counts.factorizations), p.counts.time_s});
+                      static_cast<double>(p.counts.factorizations), p.counts.time_s,
+                      largest_flange_axial_force_N(f), smallest_flange_contact_fraction(f)});
   }
   return t;
 }
@@ -74,6 +77,7 @@ void insert_tyre_figures(toml::table& t, const RollingFigures& f, double slip_an
   cp.push_back(f.centre_of_pressure_mm.x());
   cp.push_back(f.centre_of_pressure_mm.y());
   t.insert("centre_of_pressure_mm", std::move(cp));
+  insert_rim_flanges(t, f);
 }
 
 CsvTable angle_sweep_table(const RollingResult& r) { return points_table(r, r.angle_sweep, "slip-angle sweep"); }

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "tirefem/analysis/tyre_shell_forms.hpp"
+
 namespace tirefem {
 namespace {
 
@@ -71,6 +73,7 @@ InflationSummary summarize_inflation(const TyreMesh& tm, const Eigen::VectorXd& 
       s.max_belt_cord_strain = std::max(s.max_belt_cord_strain, e.outer_cords.strain[k]);
     }
   }
+  if (const std::unique_ptr<RimFlangeForm> flange = make_rim_flange_form(tm)) s.rim_flanges = flange->loads(u);
   return s;
 }
 

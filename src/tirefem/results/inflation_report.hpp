@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "tirefem/analysis/inflation.hpp"
+#include "tirefem/forms/rim_flange_form.hpp"
 #include "tirefem/io/csv_writer.hpp"
 #include "tirefem/io/plot_writer.hpp"
 #include "tirefem/io/vtu_writer.hpp"
@@ -17,6 +18,7 @@ struct InflationSummary {
   double max_belt_cord_force_N = 0.0;     // largest tension of a cord of the outer face's plies
   double max_carcass_cord_strain = 0.0;
   double max_belt_cord_strain = 0.0;
+  std::vector<RimFlangeLoad> rim_flanges;  // the inflated bead's push on the rim flanges (none without)
 };
 
 InflationSummary summarize_inflation(const TyreMesh& tyre_mesh, const Eigen::VectorXd& displacement,

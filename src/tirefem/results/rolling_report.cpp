@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "tirefem/results/cornering_report.hpp"
+#include "tirefem/results/rim_flange_report.hpp"
 #include "tirefem/results/tread_point_grid.hpp"
 #include "tirefem/road/support_surface.hpp"
 
@@ -118,7 +119,8 @@ CsvTable rolling_states_table(const RollingResult& r) {
   t.columns = {"state", "slip", "rolling_radius_mm", "loaded_radius_mm", "Qz_N", "Qy_N", "Mx_Nmm",
                "stick_area_fraction", "contact_area_mm2", "max_traction_MPa", "contact_iterations",
                "newton_iterations", "factorizations", "solves", "time_s", "converged", "slip_angle_deg",
-               "camber_deg", "Fx_N", "Fy_N", "Fz_N", "Mz_Nmm", "overturning_moment_Nmm", "pneumatic_trail_mm"};
+               "camber_deg", "Fx_N", "Fy_N", "Fz_N", "Mz_Nmm", "overturning_moment_Nmm", "pneumatic_trail_mm",
+               "flange_axial_force_N", "flange_contact_fraction"};
   for (std::size_t k = 0; k < r.states.size(); ++k) {
     const RollingStateResult& s = r.states[k];
     t.comments.push_back(
@@ -134,7 +136,8 @@ CsvTable rolling_states_table(const RollingResult& r) {
                       static_cast<double>(c.factorizations), static_cast<double>(c.solves), c.time_s,
                       s.converged ? 1.0 : 0.0, s.spec.slip_angle_deg, s.spec.camber_deg, figure(f.Fx_N),
                       figure(f.Fy_N), figure(f.Fz_N), figure(f.aligning_moment_Nmm),
-                      figure(f.overturning_moment_Nmm), s.converged ? or_nan(f.pneumatic_trail_mm) : kNaN});
+                      figure(f.overturning_moment_Nmm), s.converged ? or_nan(f.pneumatic_trail_mm) : kNaN,
+                      figure(largest_flange_axial_force_N(f)), figure(smallest_flange_contact_fraction(f))});
   }
   return t;
 }
@@ -145,14 +148,16 @@ CsvTable slip_sweep_table(const RollingResult& r) {
       fmt::format("tirefem: longitudinal force-slip sweep of '{}' (converged points, by slip)", r.name)};
   for (const std::string& c : study_comments(r)) t.comments.push_back(c);
   t.columns = {"slip", "rolling_radius_mm", "deflection_mm", "Qz_N", "Qy_N", "Mx_Nmm", "Qy_over_Qz",
-               "stick_area_fraction", "contact_iterations", "newton_iterations", "factorizations", "time_s"};
+               "stick_area_fraction", "contact_iterations", "newton_iterations", "factorizations", "time_s",
+               "flange_axial_force_N", "flange_contact_fraction"};
   for (const SweepPoint& p : r.sweep) {
     const RollingFigures& f = p.figures;
     t.rows.push_back({p.slip, p.rolling_radius_mm, p.deflection_mm, f.Qz_N, f.Qy_N, f.Mx_Nmm,
                       f.Qz_N != 0.0 ? f.Qy_N / f.Qz_N : kNaN, f.stick_area_fraction,
                       static_cast<double>(p.counts.contact_iterations),
                       static_cast<double>(p.counts.newton_iterations),
-                      static_cast<double>(p.counts.factorizations), p.counts.time_s});
+                      static_cast<double>(p.counts.factorizations), p.counts.time_s,
+                      largest_flange_axial_force_N(f), smallest_flange_contact_fraction(f)});
   }
   return t;
 }
@@ -294,6 +299,7 @@ toml::table rolling_summary(const RollingResult& r) {
       pt.insert("rolling_radius_mm", p.rolling_radius_mm);
       pt.insert("deflection_mm", p.deflection_mm);
       insert_figures(pt, p.figures);
+      insert_rim_flanges(pt, p.figures);
       pt.insert("newton_iterations", p.counts.newton_iterations);
       pt.insert("factorizations", p.counts.factorizations);
       pt.insert("time_s", p.counts.time_s);

@@ -26,6 +26,7 @@ class RimFlange final : public RigidSurface {
 
   const Eigen::Vector2d& centre() const { return centre_; }
   double radius() const { return radius_; }
+  double axis_z() const { return axis_z_; }
 
  private:
   Eigen::Vector2d centre_;
