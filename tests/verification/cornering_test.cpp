@@ -195,6 +195,52 @@ TEST(Cornering, StraightAheadTheFullModelReproducesTheHalfModel) {
               1e-4 * named(half, "traction").figures.Qz_N);
 }
 
+// The virtual rig's α sweep solves α ≥ 0 only and mirrors the rest (SlipAngleSweep::mirror_negative_angles)
+// where the tyre is its own mirror image: the example's (balanced belt pair, radial carcass) on the full
+// model, not a tyre whose belts are both laid at +22° nor a half model. The mirrored point at −2° equals
+// the state solved there (1e-6 of Fz, as for two solved mirror states), and is marked as not solved.
+TEST(Cornering, MirroredSweepPointsEqualTheSolvedStates) {
+  EXPECT_TRUE(mirror_symmetric(tyre(false)));
+  EXPECT_FALSE(mirror_symmetric(tyre(true)));
+  TyreDescription one_handed = example_case().tyre;
+  int angled = 0;
+  for (Zone& z : one_handed.zones)
+    for (Ply& p : z.outer.plies)
+      if (p.angle_deg < 0) p.angle_deg = -p.angle_deg, ++angled;
+  ASSERT_GT(angled, 0);
+  EXPECT_FALSE(mirror_symmetric(build_tyre_mesh(one_handed, coarse_mesh(8, 12, false))));
+
+  RollingStudy s;
+  s.name = "mirrored";
+  s.target_load = 3000.0;
+  s.friction = 0.7;
+  s.tread_shear = RollingStudy::TreadShear::planar;
+  s.states = {state(RollingStateSpec::Kind::free, 0.0, 0.0, "free")};
+  SlipAngleSweep sweep;
+  sweep.from = -2.0;
+  sweep.to = 2.0;
+  sweep.points = 3;
+  sweep.mirror_negative_angles = true;
+  s.angle_sweep = sweep;
+  const Case& c = example_case();
+  const RollingResult r = run_rolling(tyre(false), c.tyre, c.inflation, settings(), s);
+  ASSERT_EQ(r.angle_sweep.size(), 3u) << r.failure;
+  const SweepPoint& minus = r.angle_sweep[0];
+  EXPECT_EQ(minus.slip_angle_deg, -2.0);
+  EXPECT_TRUE(minus.mirrored);
+  EXPECT_EQ(minus.counts.newton_iterations, 0);
+  EXPECT_FALSE(r.angle_sweep[2].mirrored);
+  const RollingFigures& solved = named(run(Run::full), "alpha-2").figures;
+  std::printf("  α −2°: mirrored Fy %.3f N, Mz %.1f N·mm; solved Fy %.3f N, Mz %.1f N·mm\n", minus.figures.Fy_N,
+              minus.figures.aligning_moment_Nmm, solved.Fy_N, solved.aligning_moment_Nmm);
+  const double tol = 1e-6 * solved.Fz_N;
+  EXPECT_NEAR(minus.figures.Fz_N, solved.Fz_N, tol);
+  EXPECT_NEAR(minus.figures.Fy_N, solved.Fy_N, tol);
+  EXPECT_NEAR(minus.figures.aligning_moment_Nmm, solved.aligning_moment_Nmm, tol * r.loaded_radius_mm);
+  EXPECT_NEAR(minus.figures.overturning_moment_Nmm, solved.overturning_moment_Nmm, tol * r.loaded_radius_mm);
+  EXPECT_NEAR(minus.figures.Fx_N, solved.Fx_N, tol);
+}
+
 // A rolling state's effort is bounded (ContactSettings::max_state_iterations): the bound is checked before
 // each stage, so one that cannot be reached within it is reported as not converged, with the reason, once
 // the stage under way ends. Here α = 10° with a bound of 5 Newton iterations, fewer than its first stage

@@ -98,7 +98,12 @@ struct SweepPoint {
   double deflection_mm = 0.0;  // δz: the footprint's, or adjusted to hold Qz (SlipSweep::hold_load)
   RollingFigures figures;
   RollingSolveCounts counts;
+  bool mirrored = false;  // not solved: the mirror image of the point at −α (SlipAngleSweep::mirror_negative_angles)
 };
+
+// The figures of the mirror image of a state in the wheel plane (α, γ → −α, −γ): the lateral force and
+// the moments about X and Z change sign, the centre of pressure's Y too, and the flanges swap sides.
+RollingFigures mirrored_figures(const RollingFigures& f);
 
 struct RollingResult {
   std::string name;

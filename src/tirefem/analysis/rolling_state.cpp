@@ -73,6 +73,20 @@ RollingFigures rolling_figures(const std::vector<TreadPoint>& points, const std:
   return f;
 }
 
+RollingFigures mirrored_figures(const RollingFigures& f) {
+  RollingFigures m = f;
+  m.force_N.x() = -f.force_N.x();
+  m.Fy_N = -f.Fy_N;
+  m.overturning_moment_Nmm = -f.overturning_moment_Nmm;
+  m.aligning_moment_Nmm = -f.aligning_moment_Nmm;
+  m.centre_of_pressure_mm.y() = -f.centre_of_pressure_mm.y();
+  for (RollingFigures::Flange& flange : m.rim_flanges) {
+    flange.load.side = -flange.load.side;
+    if (flange.side != "each") flange.side = flange.side == "left" ? "right" : "left";
+  }
+  return m;
+}
+
 namespace {
 constexpr int kSingleLoopIterations = 12;
 

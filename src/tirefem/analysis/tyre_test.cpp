@@ -72,6 +72,7 @@ RollingStudy tyre_test_rolling_study(const TyreTestStudy& study, std::size_t loa
   r.angle_sweep->slip = 0.0;
   r.angle_sweep->camber_deg = 0.0;
   r.angle_sweep->hold_load = true;
+  r.angle_sweep->mirror_negative_angles = true;  // where the tyre is its own mirror image (camber 0 here)
   return r;
 }
 
@@ -136,9 +137,11 @@ TyreTestResult assemble_tyre_test(const TyreTestStudy& study, double unloaded_ra
     for (const SweepPoint& p : r->sweep)
       t.rows.push_back(row(Kind::slip_sweep, l.target_load_N, p.figures, p.slip, p.slip_angle_deg, p.camber_deg,
                            radius(p.deflection_mm), re, p.counts));
-    for (const SweepPoint& p : r->angle_sweep)
+    for (const SweepPoint& p : r->angle_sweep) {
       t.rows.push_back(row(Kind::angle_sweep, l.target_load_N, p.figures, p.slip, p.slip_angle_deg, p.camber_deg,
                            radius(p.deflection_mm), re, p.counts));
+      t.rows.back().mirrored = p.mirrored;
+    }
   }
   t.vertical = std::move(vertical);
   if (!vertical_error.empty()) t.failures.push_back("load–deflection curve: " + vertical_error);

@@ -54,6 +54,7 @@ struct TyreTestRow {
   int newton_iterations = 0;
   int factorizations = 0;
   double time_s = 0.0;
+  bool mirrored = false;  // the mirror image of the point at −ALPHA, not solved (SweepPoint::mirrored)
 };
 
 // What the rig found at one load.

@@ -1,5 +1,6 @@
 #include "tirefem/results/cornering_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -24,6 +25,9 @@ CsvTable points_table(const RollingResult& r, const std::vector<SweepPoint>& poi
       "the road; forces and moments of the road on the tyre; slip angle > 0: the wheel moves to the left of "
       "its heading (Fy < 0); camber > 0: the top of the wheel leans to the right",
       "slip kappa = Re/Rk - 1; pneumatic_trail = -Mz/Fy (nan where |Fy| <= 1e-3 Fz)"};
+  if (std::any_of(points.begin(), points.end(), [](const SweepPoint& p) { return p.mirrored; }))
+    t.comments.push_back("points at negative slip angle with 0 Newton iterations are the mirror images of those at "
+                         "the positive one, not solved (the tyre is its own mirror image, camber 0)");
   t.columns = {"slip_angle_deg", "camber_deg", "slip", "rolling_radius_mm", "deflection_mm", "Fx_N", "Fy_N",
                "Fz_N", "Mz_Nmm", "overturning_moment_Nmm", "pneumatic_trail_mm", "Fy_over_Fz",
                "stick_area_fraction", "newton_iterations", "factorizations", "time_s", "flange_axial_force_N",

@@ -1,5 +1,6 @@
 #include "tirefem/results/tyre_test_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -89,6 +90,10 @@ CsvTable tyre_test_table(const TyreTestResult& t) {
       "point; PATCH_*: the static footprint at the load",
       "SERIES: 0 free rolling, 1 longitudinal slip sweep, 2 slip-angle sweep, 3 cambered free rolling; FZ held at "
       "TARGET_FZ in the sweeps"};
+  if (std::any_of(t.rows.begin(), t.rows.end(), [](const TyreTestRow& r) { return r.mirrored; }))
+    table.comments.push_back(
+        "slip-angle sweep points at ALPHA < 0 with 0 Newton iterations are the mirror images of those at -ALPHA, "
+        "not solved: the tyre is its own mirror image and GAMMA = 0 (FY, MZ, MX change sign)");
   table.columns = {"FZ", "KAPPA", "ALPHA", "GAMMA", "FX", "FY", "MZ", "MX", "RE", "RL", "PATCH_LENGTH",
                    "PATCH_WIDTH", "TARGET_FZ", "SERIES", "NEWTON_ITERATIONS", "FACTORIZATIONS", "TIME"};
   for (const TyreTestRow& r : t.rows) {

@@ -167,4 +167,16 @@ TyreMesh build_tyre_mesh(const TyreDescription& tyre, const MeshSettings& settin
   return result;
 }
 
+bool mirror_symmetric(const TyreMesh& tm) {
+  if (tm.half_model) return false;
+  const auto orthotropic = [](const MembraneStiffness& a) {
+    const double scale = a.cwiseAbs().maxCoeff();
+    return std::abs(a(0, 2)) <= 1e-10 * scale && std::abs(a(1, 2)) <= 1e-10 * scale &&
+           std::abs(a(2, 0)) <= 1e-10 * scale && std::abs(a(2, 1)) <= 1e-10 * scale;
+  };
+  for (const ElementSection& s : tm.sections)
+    if (!orthotropic(s.inner_face) || !orthotropic(s.outer_face)) return false;
+  return true;
+}
+
 }  // namespace tirefem

@@ -45,6 +45,12 @@ struct TyreMesh {
 // Throws std::invalid_argument on inconsistent input (validate_case() reports it with field names first).
 TyreMesh build_tyre_mesh(const TyreDescription& tyre, const MeshSettings& settings);
 
+// Whether the full model is its own mirror image in the wheel plane x = 0. Its geometry, tread, flanges
+// and zones are (the profile is mirrored); its faces are if no face couples stretch and shear (A16 = A26
+// = 0 relative to the face's stiffness: a balanced belt pair, cords at 0° or 90°), since the mirror turns
+// a cord at +θ into one at −θ. False for a half model (there is nothing to mirror).
+bool mirror_symmetric(const TyreMesh& tm);
+
 // Meridional stations of the half model, 0 … L (see above). `breaks` are the interior cut points.
 std::vector<double> meridional_stations(double length, std::vector<double> breaks, int elements);
 
