@@ -198,7 +198,8 @@ TEST(Cornering, StraightAheadTheFullModelReproducesTheHalfModel) {
 // The virtual rig's α sweep solves α ≥ 0 only and mirrors the rest (SlipAngleSweep::mirror_negative_angles)
 // where the tyre is its own mirror image: the example's (balanced belt pair, radial carcass) on the full
 // model, not a tyre whose belts are both laid at +22° nor a half model. The mirrored point at −2° equals
-// the state solved there (1e-6 of Fz, as for two solved mirror states), and is marked as not solved.
+// the state solved there in the same study (1e-6 of Fz, as for two solved mirror states), and is marked
+// as not solved; the cornering stiffness's probe at −0.2° is mirrored too, so it is −dFy/dα from one side.
 TEST(Cornering, MirroredSweepPointsEqualTheSolvedStates) {
   EXPECT_TRUE(mirror_symmetric(tyre(false)));
   EXPECT_FALSE(mirror_symmetric(tyre(true)));
@@ -215,7 +216,8 @@ TEST(Cornering, MirroredSweepPointsEqualTheSolvedStates) {
   s.target_load = 3000.0;
   s.friction = 0.7;
   s.tread_shear = RollingStudy::TreadShear::planar;
-  s.states = {state(RollingStateSpec::Kind::free, 0.0, 0.0, "free")};
+  s.states = {state(RollingStateSpec::Kind::free, 0.0, 0.0, "free"),
+              state(RollingStateSpec::Kind::given_slip, 0.0, -2.0, "alpha-2")};
   SlipAngleSweep sweep;
   sweep.from = -2.0;
   sweep.to = 2.0;
@@ -230,7 +232,7 @@ TEST(Cornering, MirroredSweepPointsEqualTheSolvedStates) {
   EXPECT_TRUE(minus.mirrored);
   EXPECT_EQ(minus.counts.newton_iterations, 0);
   EXPECT_FALSE(r.angle_sweep[2].mirrored);
-  const RollingFigures& solved = named(run(Run::full), "alpha-2").figures;
+  const RollingFigures& solved = named(r, "alpha-2").figures;
   std::printf("  α −2°: mirrored Fy %.3f N, Mz %.1f N·mm; solved Fy %.3f N, Mz %.1f N·mm\n", minus.figures.Fy_N,
               minus.figures.aligning_moment_Nmm, solved.Fy_N, solved.aligning_moment_Nmm);
   const double tol = 1e-6 * solved.Fz_N;
@@ -239,6 +241,8 @@ TEST(Cornering, MirroredSweepPointsEqualTheSolvedStates) {
   EXPECT_NEAR(minus.figures.aligning_moment_Nmm, solved.aligning_moment_Nmm, tol * r.loaded_radius_mm);
   EXPECT_NEAR(minus.figures.overturning_moment_Nmm, solved.overturning_moment_Nmm, tol * r.loaded_radius_mm);
   EXPECT_NEAR(minus.figures.Fx_N, solved.Fx_N, tol);
+  ASSERT_TRUE(r.cornering_stiffness_N_per_deg.has_value());
+  EXPECT_LT(*r.cornering_stiffness_N_per_deg, 0.0) << "dFy/dα < 0 in W axes";
 }
 
 // A rolling state's effort is bounded (ContactSettings::max_state_iterations): the bound is checked before

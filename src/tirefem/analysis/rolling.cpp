@@ -180,7 +180,9 @@ std::vector<SweepTarget> outward(std::vector<double> values, Make make) {
 // two extra solves near the straight-ahead state, where the patch still sticks almost everywhere (the
 // sweep's own points lie in the nonlinear range). Not sweep points: not reported as such.
 constexpr double kProbeAngle = 0.2;  // degrees
-void cornering_stiffness(RollingModel& model, const RollingStudy& study, RollingResult& r,
+// `mirror`: the tyre is its own mirror image (SlipAngleSweep::mirror_negative_angles), so the probe at
+// −kProbeAngle is the mirror image of the one at +kProbeAngle, not solved.
+void cornering_stiffness(RollingModel& model, const RollingStudy& study, RollingResult& r, bool mirror,
                          const ProgressSink& progress) {
   const SlipAngleSweep& sw = *study.angle_sweep;
   FrictionLaw law;
@@ -188,8 +190,15 @@ void cornering_stiffness(RollingModel& model, const RollingStudy& study, Rolling
   const double rk = *r.effective_rolling_radius_mm / (1.0 + sw.slip);
   model.set_deflection(r.deflection_mm);
   RollingModel::Solved plus = model.solve(law, {rk, kProbeAngle * kDegree, sw.camber_deg * kDegree});
-  RollingModel::Solved minus = model.solve(law, {rk, -kProbeAngle * kDegree, sw.camber_deg * kDegree});
-  if (!plus.converged || !minus.converged) return;
+  if (!plus.converged) return;
+  RollingModel::Solved minus;
+  if (mirror) {
+    minus.converged = true;
+    minus.figures = mirrored_figures(plus.figures);
+  } else {
+    minus = model.solve(law, {rk, -kProbeAngle * kDegree, sw.camber_deg * kDegree});
+    if (!minus.converged) return;
+  }
   r.cornering_stiffness_N_per_deg = (plus.figures.Fy_N - minus.figures.Fy_N) / (2.0 * kProbeAngle);
   const double dfy = plus.figures.Fy_N - minus.figures.Fy_N;
   if (dfy != 0.0)
@@ -367,9 +376,11 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
     const auto paired = [&](double a) {
       return a < 0 && std::any_of(angles.begin(), angles.end(), [a](double b) { return std::abs(a + b) <= 1e-12 * std::abs(a); });
     };
-    if (sw.mirror_negative_angles && sw.camber_deg == 0.0 && mirror_symmetric(tm)) {
+    const bool mirror = sw.mirror_negative_angles && sw.camber_deg == 0.0 && mirror_symmetric(tm);
+    if (mirror) {
       std::copy_if(angles.begin(), angles.end(), std::back_inserter(mirrored), paired);
       std::erase_if(angles, paired);
+      std::sort(mirrored.rbegin(), mirrored.rend());  // from α = 0 outwards, as solved
     }
     const auto targets = outward(angles, [&](double a) { return SweepTarget{sw.slip, a, sw.camber_deg}; });
     ok = run_sweep(model, study, r, targets, sw.hold_load, r.angle_sweep, "α sweep", progress, point_done) && ok;
@@ -392,7 +403,7 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
     }
     std::sort(r.angle_sweep.begin(), r.angle_sweep.end(),
               [](const SweepPoint& a, const SweepPoint& b) { return a.slip_angle_deg < b.slip_angle_deg; });
-    cornering_stiffness(model, study, r, progress);
+    cornering_stiffness(model, study, r, mirror, progress);
   }
   if (study.combined) {
     // Each slip κ a branch outwards in α from the point nearest α = 0.
