@@ -342,6 +342,14 @@ TEST(RollingReport, SummaryKeys) {
 TEST(RollingReport, RimFlangeLoads) {
   RollingResult r = rolling(false);
   RimFlangeLoad left{-1, 2000.0, 150.0, 0.8, 1.0}, right{1, 2500.0, 90.0, 0.6, 0.75};
+  // Named by the W-axis side of the travel: forward, +Y (left) is x < 0; reversed, x > 0.
+  EXPECT_EQ(rim_flange_side(left, false, false), "left");
+  EXPECT_EQ(rim_flange_side(right, false, false), "right");
+  EXPECT_EQ(rim_flange_side(right, false, true), "left");
+  EXPECT_EQ(rim_flange_side(right, true, false), "each");
+  const RollingFigures mirror = mirrored_figures(RollingFigures{.rim_flanges = {{"left", left}}});
+  EXPECT_EQ(mirror.rim_flanges[0].side, "right");
+  EXPECT_EQ(mirror.rim_flanges[0].load.side, 1);
   r.states[0].figures.rim_flanges = {{"left", left}, {"right", right}};
   r.sweep[0].figures.rim_flanges = r.states[0].figures.rim_flanges;
   const toml::table s = rolling_summary(r);

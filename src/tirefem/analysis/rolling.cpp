@@ -176,6 +176,29 @@ std::vector<SweepTarget> outward(std::vector<double> values, Make make) {
   return targets;
 }
 
+// The sweep points at the angles `mirrored` (each < 0) as the mirror images of the solved points at −α
+// (SlipAngleSweep::mirror_negative_angles); none where that point failed (the sweep reports the failure).
+void add_mirrored_points(const std::vector<double>& mirrored, std::vector<SweepPoint>& points,
+                         const ProgressSink& progress, const std::function<void()>& point_done) {
+  for (double a : mirrored) {
+    const auto it = std::find_if(points.begin(), points.end(), [a](const SweepPoint& p) {
+      return !p.mirrored && std::abs(p.slip_angle_deg + a) <= 1e-12 * std::abs(a);
+    });
+    if (it != points.end()) {
+      SweepPoint m = *it;
+      m.slip_angle_deg = a;
+      m.figures = mirrored_figures(it->figures);
+      m.counts = {};
+      m.mirrored = true;
+      if (progress)
+        progress(fmt::format("  α sweep κ {:+.4f}, α {:g}°: the mirror image of α {:g}° (Fy {:+8.1f} N, Mz {:+9.0f} N·mm)",
+                             m.slip, a, -a, m.figures.Fy_N, m.figures.aligning_moment_Nmm));
+      points.push_back(std::move(m));
+    }
+    if (point_done) point_done();
+  }
+}
+
 // dFy/dα and the pneumatic trail at α = 0 (κ and γ of the sweep): central differences over ±kProbeAngle,
 // two extra solves near the straight-ahead state, where the patch still sticks almost everywhere (the
 // sweep's own points lie in the nonlinear range). Not sweep points: not reported as such.
@@ -384,23 +407,7 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
     }
     const auto targets = outward(angles, [&](double a) { return SweepTarget{sw.slip, a, sw.camber_deg}; });
     ok = run_sweep(model, study, r, targets, sw.hold_load, r.angle_sweep, "α sweep", progress, point_done) && ok;
-    for (double a : mirrored) {
-      const auto it = std::find_if(r.angle_sweep.begin(), r.angle_sweep.end(), [a](const SweepPoint& p) {
-        return !p.mirrored && std::abs(p.slip_angle_deg + a) <= 1e-12 * std::abs(a);
-      });
-      if (it != r.angle_sweep.end()) {  // else the point at −a failed, and the sweep says so
-        SweepPoint m = *it;
-        m.slip_angle_deg = a;
-        m.figures = mirrored_figures(it->figures);
-        m.counts = {};
-        m.mirrored = true;
-        if (progress)
-          progress(fmt::format("  α sweep κ {:+.4f}, α {:g}°: the mirror image of α {:g}° (Fy {:+8.1f} N, Mz {:+9.0f} N·mm)",
-                               m.slip, a, -a, m.figures.Fy_N, m.figures.aligning_moment_Nmm));
-        r.angle_sweep.push_back(std::move(m));
-      }
-      if (point_done) point_done();
-    }
+    add_mirrored_points(mirrored, r.angle_sweep, progress, point_done);
     std::sort(r.angle_sweep.begin(), r.angle_sweep.end(),
               [](const SweepPoint& a, const SweepPoint& b) { return a.slip_angle_deg < b.slip_angle_deg; });
     cornering_stiffness(model, study, r, mirror, progress);

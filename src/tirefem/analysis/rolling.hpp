@@ -45,8 +45,8 @@ struct RollingFigures {
   double overturning_moment_Nmm = 0.0, rolling_moment_Nmm = 0.0, aligning_moment_Nmm = 0.0;
   std::optional<double> pneumatic_trail_mm;
   Eigen::Vector2d centre_of_pressure_mm = Eigen::Vector2d::Zero();
-  // The rim flanges' loads (forms/rim_flange_form.hpp), when the tyre leans on flanges: on a half model
-  // one, which each flange carries ("each"); on a full one both, named by the W-axis side ("left": +Y).
+  // The rim flanges' loads (forms/rim_flange_form.hpp), when the tyre leans on flanges, each named by
+  // rim_flange_side.
   struct Flange {
     std::string side;
     RimFlangeLoad load;
@@ -100,6 +100,11 @@ struct SweepPoint {
   RollingSolveCounts counts;
   bool mirrored = false;  // not solved: the mirror image of the point at −α (SlipAngleSweep::mirror_negative_angles)
 };
+
+// A flange's name in the outputs: "each" on a half model (the one flange computed stands for both); on a
+// full one its W-axis side for the travel, "left" (+Y) or "right" (forward travel: "left" is at x < 0).
+// States without travel (inflation) are named as for forward travel.
+std::string rim_flange_side(const RimFlangeLoad& load, bool half_model, bool reverse);
 
 // The figures of the mirror image of a state in the wheel plane (α, γ → −α, −γ): the lateral force and
 // the moments about X and Z change sign, the centre of pressure's Y too, and the flanges swap sides.

@@ -288,12 +288,12 @@ void RollingModel::set_deflection(double deflection) {
 }
 
 RollingFigures RollingModel::figures(const Eigen::VectorXd& u) const {
-  const WheelFrame frame = wheel_frame(*support_, deflection_, result_.reverse);
   RollingFigures f = rolling_figures(contact_->points(), contact_->evaluate(u), friction_->evaluate(u), tm_.axis_z,
-                                     tm_.half_model, result_.reverse, frame);
+                                     tm_.half_model, result_.reverse,
+                                     wheel_frame(*support_, deflection_, result_.reverse));
   if (flange_)
     for (const RimFlangeLoad& load : flange_->loads(u))
-      f.rim_flanges.push_back({tm_.half_model ? "each" : load.side * frame.y.x() > 0 ? "left" : "right", load});
+      f.rim_flanges.push_back({rim_flange_side(load, tm_.half_model, result_.reverse), load});
   return f;
 }
 

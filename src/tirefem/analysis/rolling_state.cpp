@@ -73,6 +73,11 @@ RollingFigures rolling_figures(const std::vector<TreadPoint>& points, const std:
   return f;
 }
 
+std::string rim_flange_side(const RimFlangeLoad& load, bool half_model, bool reverse) {
+  if (half_model) return "each";
+  return (load.side < 0) != reverse ? "left" : "right";
+}
+
 RollingFigures mirrored_figures(const RollingFigures& f) {
   RollingFigures m = f;
   m.force_N.x() = -f.force_N.x();

@@ -192,7 +192,7 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
                           {"newton_iterations", r.counters.newton_iterations}};
     if (!s.rim_flanges.empty()) {
       toml::array flanges;
-      for (const RimFlangeLoad& l : s.rim_flanges) flanges.push_back(rim_flange_table(static_flange_side(tm.half_model, l), l));
+      for (const RimFlangeLoad& l : s.rim_flanges) flanges.push_back(rim_flange_table(rim_flange_side(l, tm.half_model, false), l));
       inflation.insert("rim_flanges", std::move(flanges));
     }
     inflation.insert("solver", counters_table(r.counters));
@@ -205,7 +205,7 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     for (const RimFlangeLoad& l : s.rim_flanges)
       report(progress, fmt::format("  rim flange ({}): axial push {:.0f} N, peak pressure {:.3f} MPa, in contact "
                                    "over {:.0f}% of the round",
-                                   static_flange_side(tm.half_model, l), l.axial_force_N, l.peak_pressure_MPa,
+                                   rim_flange_side(l, tm.half_model, false), l.axial_force_N, l.peak_pressure_MPa,
                                    100 * l.contact_fraction));
     times.end();
   }

@@ -4,10 +4,6 @@
 
 namespace tirefem {
 
-std::string static_flange_side(bool half_model, const RimFlangeLoad& load) {
-  return half_model ? "each" : load.side < 0 ? "left" : "right";
-}
-
 toml::table rim_flange_table(const std::string& side, const RimFlangeLoad& load) {
   return toml::table{{"side", side},
                      {"axial_force_N", load.axial_force_N},

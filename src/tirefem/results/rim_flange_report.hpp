@@ -12,10 +12,6 @@
 
 namespace tirefem {
 
-// The flange's name in a state without travel (inflation, footprint): "each" on a half model (both carry
-// it), else by the W-axis side of forward travel ("left" is +Y, the flange at x < 0).
-std::string static_flange_side(bool half_model, const RimFlangeLoad& load);
-
 toml::table rim_flange_table(const std::string& side, const RimFlangeLoad& load);
 
 // A rolling state's flanges (RollingFigures::rim_flanges) as `rim_flanges`, an array of tables; nothing
