@@ -59,7 +59,7 @@ TEST(TyreTestReport, RowsInSiUnitsAndWAxisSigns) {
   s.nominal_load = 4000.0;
   s.load_factors = {1.0};
   const RollingResult r = load_result(4000.0);
-  const TyreTestResult t = assemble_tyre_test(s, 285.0, {&r}, {""}, std::nullopt, "");
+  const TyreTestResult t = assemble_tyre_test(s, 285.0, {{{&r}, {""}}}, std::nullopt, "");
   EXPECT_TRUE(t.completed);
   ASSERT_EQ(t.rows.size(), 3u);
   const CsvTable table = tyre_test_table(t);
@@ -98,7 +98,8 @@ TEST(TyreTestReport, AFailedLoadIsNamedAndTheRestKept) {
   r.completed = false;
   r.failure = "α sweep κ +0.0000, α +6°: Newton: residual 1e-3";
   const TyreTestResult t =
-      assemble_tyre_test(s, 285.0, {nullptr, &r}, {"tyre test 'rig_Fz2000' failed: singular", ""}, std::nullopt, "");
+      assemble_tyre_test(s, 285.0, {{{nullptr}, {"tyre test 'rig_Fz2000' failed: singular"}}, {{&r}, {""}}},
+                         std::nullopt, "");
   EXPECT_FALSE(t.completed);
   ASSERT_EQ(t.failures.size(), 2u);
   EXPECT_NE(t.failures[0].find("load 2000 N: tyre test 'rig_Fz2000' failed: singular"), std::string::npos);
@@ -109,20 +110,67 @@ TEST(TyreTestReport, AFailedLoadIsNamedAndTheRestKept) {
   EXPECT_EQ(summary["loads"].as_array()->size(), 2u);
 }
 
+// The two series of a load (tyre_test_rolling_study) make one load: the longitudinal series' rows, then
+// the lateral ones; Re and the slip stiffness from the first, the cornering stiffness from the second; a
+// failed lateral series fails the load and keeps the longitudinal rows.
+TEST(TyreTestReport, TheTwoSeriesOfALoadMakeOneLoad) {
+  TyreTestStudy s;
+  s.name = "rig";
+  s.nominal_load = 4000.0;
+  s.load_factors = {1.0};
+  RollingResult longitudinal = load_result(4000.0);
+  longitudinal.angle_sweep.clear();
+  longitudinal.cornering_stiffness_N_per_deg.reset();
+  RollingResult lateral = load_result(4000.0);
+  lateral.states.clear();
+  lateral.sweep.clear();
+  lateral.effective_rolling_radius_mm = 281.0;  // solved alike in both: the first series' is taken
+  lateral.cornering_stiffness_N_per_deg = -750.0;
+  lateral.pneumatic_trail_at_zero_mm = 30.0;
+  TyreTestResult t = assemble_tyre_test(s, 285.0, {{{&longitudinal, &lateral}, {"", ""}}}, std::nullopt, "");
+  EXPECT_TRUE(t.completed);
+  ASSERT_EQ(t.rows.size(), 3u);
+  EXPECT_EQ(t.rows[0].kind, TyreTestRow::Kind::free);
+  EXPECT_EQ(t.rows[1].kind, TyreTestRow::Kind::slip_sweep);
+  EXPECT_EQ(t.rows[2].kind, TyreTestRow::Kind::angle_sweep);
+  EXPECT_DOUBLE_EQ(t.rows[2].effective_radius_m, 0.280);
+  ASSERT_EQ(t.loads.size(), 1u);
+  EXPECT_EQ(t.loads[0].effective_rolling_radius_mm, 280.0);
+  EXPECT_EQ(t.loads[0].slip_stiffness_N, 60000.0);
+  EXPECT_EQ(t.loads[0].cornering_stiffness_N_per_deg, -750.0);
+  EXPECT_EQ(t.loads[0].pneumatic_trail_mm, 30.0);
+
+  t = assemble_tyre_test(s, 285.0, {{{&longitudinal, nullptr}, {"", "tyre test 'rig_Fz4000_alpha' failed: singular"}}},
+                         std::nullopt, "");
+  EXPECT_FALSE(t.completed);
+  EXPECT_FALSE(t.loads[0].completed);
+  ASSERT_EQ(t.failures.size(), 1u);
+  EXPECT_NE(t.failures[0].find("load 4000 N: tyre test 'rig_Fz4000_alpha' failed"), std::string::npos);
+  EXPECT_EQ(t.rows.size(), 2u);
+  EXPECT_FALSE(t.loads[0].cornering_stiffness_N_per_deg);
+}
+
 TEST(TyreTestReport, PointCountAndStudiesPerLoad) {
   TyreTestStudy s;
   s.name = "rig";
   s.nominal_load = 3000.0;
   s.cambers_deg = {2.0};
-  EXPECT_EQ(tyre_test_points(s), 3 * (1 + 1 + 15 + 15));
-  const RollingStudy r = tyre_test_rolling_study(s, 2);
+  EXPECT_EQ(tyre_test_points(s), 3 * (2 + 1 + 15 + 15));  // free rolling in each series
+  const RollingStudy r = tyre_test_rolling_study(s, 2, TyreTestSeries::longitudinal);
   EXPECT_EQ(r.name, "rig_Fz4500");
   EXPECT_EQ(r.target_load, 4500.0);
   ASSERT_EQ(r.states.size(), 2u);
   EXPECT_EQ(r.states[1].camber_deg, 2.0);
-  ASSERT_TRUE(r.sweep && r.angle_sweep);
-  EXPECT_TRUE(r.sweep->hold_load && r.angle_sweep->hold_load);
+  ASSERT_TRUE(r.sweep && !r.angle_sweep);
+  EXPECT_TRUE(r.sweep->hold_load);
   EXPECT_EQ(r.tread_shear, RollingStudy::TreadShear::planar);
+  const RollingStudy a = tyre_test_rolling_study(s, 2, TyreTestSeries::lateral);
+  EXPECT_EQ(a.name, "rig_Fz4500_alpha");
+  EXPECT_EQ(a.target_load, 4500.0);
+  EXPECT_TRUE(a.states.empty());  // its free rolling is the longitudinal series' row
+  ASSERT_TRUE(a.angle_sweep && !a.sweep);
+  EXPECT_TRUE(a.angle_sweep->hold_load && a.angle_sweep->mirror_negative_angles);
+  EXPECT_EQ(a.tread_shear, RollingStudy::TreadShear::planar);
   MeshSettings full;
   full.half_model = false;
   full.circumferential_elements = 64;

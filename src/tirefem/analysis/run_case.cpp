@@ -1,5 +1,6 @@
 #include "tirefem/analysis/run_case.hpp"
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <mutex>
@@ -239,7 +240,7 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
   // from its footprint. Chains run side by side (parallel_chains.hpp).
   // A tyre test is a study per load and one for its load–deflection curve.
   int rig_runs = 0;
-  for (const TyreTestStudy& s : c.tyre_tests) rig_runs += static_cast<int>(s.load_factors.size()) + 1;
+  for (const TyreTestStudy& s : c.tyre_tests) rig_runs += 2 * static_cast<int>(s.load_factors.size()) + 1;
   const int study_count =
       static_cast<int>(c.load_curves.size() + c.footprints.size() + c.rolling.size()) + rig_runs;
   std::vector<StudyRun> runs(study_count);
@@ -328,34 +329,40 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     }
     ++k;
   }
-  // A tyre test: a chain per load, the heaviest first (they take longest), then its vertical curve. The plans
-  // are complete before any task is made: the tasks refer to them.
+  // A tyre test: a chain per load and series (longitudinal, lateral: tyre_test_rolling_study), the heaviest
+  // load first and its lateral series before its longitudinal one (they take longest), then its vertical
+  // curve. The two series of a load share its footprint when one finds the other's (SharedFootprints). The
+  // plans are complete before any task is made: the tasks refer to them.
   struct RigPlan {
-    std::vector<RollingStudy> loads;
+    std::vector<RollingStudy> series;  // by load: longitudinal, lateral
     LoadCurveStudy vertical;
     MeshSettings mesh;
     std::unique_ptr<TyreTestProgress> progress;
   };
+  constexpr std::array kRigSeries{TyreTestSeries::longitudinal, TyreTestSeries::lateral};
   std::vector<RigPlan> rigs;
   for (const TyreTestStudy& s : c.tyre_tests) {
     RigPlan& r = rigs.emplace_back();
-    for (std::size_t i = 0; i < s.load_factors.size(); ++i) r.loads.push_back(tyre_test_rolling_study(s, i));
+    for (std::size_t i = 0; i < s.load_factors.size(); ++i)
+      for (const TyreTestSeries series : kRigSeries) r.series.push_back(tyre_test_rolling_study(s, i, series));
     r.vertical = tyre_test_vertical_study(s);
     r.mesh = s.mesh.value_or(c.mesh);
     r.progress = std::make_unique<TyreTestProgress>(s);
   }
   for (const RigPlan& rig : rigs) {
-    for (const RollingStudy& s : rig.loads) {
-      chains.push_back({task(k, "tyre test '" + s.name + "'", [&, k, r = &rig, s = &s](const ProgressSink& sink) {
+    for (const RollingStudy& s : rig.series) {
+      const std::string key = SharedFootprints::key(rig.mesh, s.support, s.target_load, s.load_tolerance);
+      chains.push_back({task(k, "tyre test '" + s.name + "'", [&, k, key, r = &rig, s = &s](const ProgressSink& sink) {
         const auto point_done = [&] {
           if (const std::string line = r->progress->point_done(); !line.empty()) sink(line);
         };
         runs[k].rolling = run_rolling(tyres.mesh(r->mesh), c.tyre, c.inflation, c.contact, *s, sink,
-                                      &tyres.inflated(r->mesh), nullptr, point_done);
+                                      &tyres.inflated(r->mesh), footprints.find(key), point_done);
+        footprints.keep(key, runs[k].rolling->footprint);
       })});
       ++k;
     }
-    std::reverse(chains.end() - static_cast<std::ptrdiff_t>(rig.loads.size()), chains.end());
+    std::reverse(chains.end() - static_cast<std::ptrdiff_t>(rig.series.size()), chains.end());
     chains.push_back({task(k, "tyre test '" + rig.vertical.name + "'", [&, k, r = &rig](const ProgressSink& sink) {
       const MeshSettings half = tyre_test_vertical_mesh(r->mesh);
       runs[k].contact =
@@ -448,15 +455,15 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
   if (!c.rolling.empty()) summary.insert("rolling", std::move(rolling_summaries));
   toml::array rig_summaries;
   for (const TyreTestStudy& s : c.tyre_tests) {
-    std::vector<const RollingResult*> loads;
-    std::vector<std::string> errors;
-    for (std::size_t i = 0; i < s.load_factors.size(); ++i, ++k) {
-      loads.push_back(runs[k].rolling ? &*runs[k].rolling : nullptr);
-      errors.push_back(runs[k].error);
-    }
+    std::vector<TyreTestLoadRuns> loads(s.load_factors.size());
+    for (TyreTestLoadRuns& load : loads)
+      for (std::size_t j = 0; j < kRigSeries.size(); ++j, ++k) {
+        load.series.push_back(runs[k].rolling ? &*runs[k].rolling : nullptr);
+        load.errors.push_back(runs[k].error);
+      }
     const StudyRun& vertical = runs[k++];
-    const TyreTestResult t = assemble_tyre_test(s, case_reading::tyre_outer_radius(c.tyre), loads, errors, vertical.contact,
-                                                vertical.error);
+    const TyreTestResult t =
+        assemble_tyre_test(s, case_reading::tyre_outer_radius(c.tyre), loads, vertical.contact, vertical.error);
     for (const std::string& m : t.failures) {
       report(progress, fmt::format("warning: tyre test '{}': {} (converged points kept)", s.name, m));
       incomplete.push_back(fmt::format("tyre test '{}': {}", s.name, m));

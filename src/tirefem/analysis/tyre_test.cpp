@@ -32,7 +32,7 @@ TyreTestRow row(TyreTestRow::Kind kind, double target, const RollingFigures& f, 
 }  // namespace
 
 int tyre_test_points(const TyreTestStudy& s) {
-  const int per_load = 1 + static_cast<int>(s.cambers_deg.size()) + s.slip_sweep.points + s.angle_sweep.points;
+  const int per_load = 2 + static_cast<int>(s.cambers_deg.size()) + s.slip_sweep.points + s.angle_sweep.points;
   return per_load * static_cast<int>(s.load_factors.size());
 }
 
@@ -50,15 +50,24 @@ std::string TyreTestProgress::point_done() {
                      done_ < total_ ? fmt::format(", about {:.0f} s left", left) : "");
 }
 
-RollingStudy tyre_test_rolling_study(const TyreTestStudy& study, std::size_t load_index) {
+RollingStudy tyre_test_rolling_study(const TyreTestStudy& study, std::size_t load_index, TyreTestSeries series) {
   const double load = study.load_factors.at(load_index) * study.nominal_load;
   RollingStudy r;
-  r.name = fmt::format("{}_Fz{:.0f}", study.name, load);
+  const bool lateral = series == TyreTestSeries::lateral;
+  r.name = fmt::format("{}_Fz{:.0f}{}", study.name, load, lateral ? "_alpha" : "");
   r.target_load = load;
   r.load_tolerance = study.load_tolerance;
   r.friction = study.friction;
   r.tread_shear = RollingStudy::TreadShear::planar;
   r.mesh = study.mesh;
+  if (lateral) {
+    r.angle_sweep = study.angle_sweep;
+    r.angle_sweep->slip = 0.0;
+    r.angle_sweep->camber_deg = 0.0;
+    r.angle_sweep->hold_load = true;
+    r.angle_sweep->mirror_negative_angles = true;  // where the tyre is its own mirror image (camber 0 here)
+    return r;  // free rolling is solved all the same (the sweep starts from it), not reported twice
+  }
   r.states.push_back({});  // free rolling: Re at this load
   for (double gamma : study.cambers_deg) {
     RollingStateSpec s;
@@ -68,11 +77,6 @@ RollingStudy tyre_test_rolling_study(const TyreTestStudy& study, std::size_t loa
   }
   r.sweep = study.slip_sweep;
   r.sweep->hold_load = true;
-  r.angle_sweep = study.angle_sweep;
-  r.angle_sweep->slip = 0.0;
-  r.angle_sweep->camber_deg = 0.0;
-  r.angle_sweep->hold_load = true;
-  r.angle_sweep->mirror_negative_angles = true;  // where the tyre is its own mirror image (camber 0 here)
   return r;
 }
 
@@ -91,9 +95,8 @@ MeshSettings tyre_test_vertical_mesh(const MeshSettings& rig_mesh) {
 }
 
 TyreTestResult assemble_tyre_test(const TyreTestStudy& study, double unloaded_radius_mm,
-                                  const std::vector<const RollingResult*>& loads,
-                                  const std::vector<std::string>& errors, std::optional<StaticContactResult> vertical,
-                                  const std::string& vertical_error) {
+                                  const std::vector<TyreTestLoadRuns>& loads,
+                                  std::optional<StaticContactResult> vertical, const std::string& vertical_error) {
   using Kind = TyreTestRow::Kind;
   TyreTestResult t;
   t.name = study.name;
@@ -102,45 +105,61 @@ TyreTestResult assemble_tyre_test(const TyreTestStudy& study, double unloaded_ra
   for (std::size_t i = 0; i < study.load_factors.size(); ++i) {
     TyreTestLoad l;
     l.target_load_N = study.load_factors[i] * study.nominal_load;
-    const RollingResult* r = i < loads.size() ? loads[i] : nullptr;
-    if (!r) {
-      l.failure = i < errors.size() && !errors[i].empty() ? errors[i] : "not run";
-      t.failures.push_back(fmt::format("load {:.0f} N: {}", l.target_load_N, l.failure));
-      t.loads.push_back(l);
-      continue;
+    const TyreTestLoadRuns runs = i < loads.size() ? loads[i] : TyreTestLoadRuns{};
+    std::vector<const RollingResult*> series;  // those that ran
+    l.completed = !runs.series.empty();
+    for (std::size_t j = 0; j < runs.series.size(); ++j) {
+      const RollingResult* r = runs.series[j];
+      const std::string error = j < runs.errors.size() && !runs.errors[j].empty() ? runs.errors[j] : "not run";
+      const std::string failure = r ? r->failure : error;
+      if (!r || !r->completed) {
+        l.completed = false;
+        if (l.failure.empty()) l.failure = failure;
+        t.failures.push_back(fmt::format("load {:.0f} N: {}", l.target_load_N, failure));
+      }
+      if (r) series.push_back(r);
     }
-    l.completed = r->completed;
-    l.failure = r->failure;
-    if (!r->completed) t.failures.push_back(fmt::format("load {:.0f} N: {}", l.target_load_N, r->failure));
-    if (!r->footprint.points.empty()) {
-      const PatchFigures& p = r->footprint.points.back().patch;
-      l.Fz_N = p.Qz_N;
-      l.patch_length_mm = p.patch_length_mm;
-      l.patch_width_mm = p.patch_width_mm;
+    if (runs.series.empty()) {
+      l.failure = "not run";
+      t.failures.push_back(fmt::format("load {:.0f} N: not run", l.target_load_N));
     }
-    l.deflection_mm = r->deflection_mm;
-    l.loaded_radius_mm = r->loaded_radius_mm;
-    l.effective_rolling_radius_mm = r->effective_rolling_radius_mm;
-    l.slip_stiffness_N = r->slip_stiffness_N;
-    l.cornering_stiffness_N_per_deg = r->cornering_stiffness_N_per_deg;
-    l.pneumatic_trail_mm = r->pneumatic_trail_at_zero_mm;
+    // The footprint, the radii and the slip stiffness: the same in both series (the same footprint and free
+    // rolling), taken from the first that has them; the cornering stiffness from the lateral one.
+    for (const RollingResult* r : series) {
+      if (l.Fz_N == 0.0 && !r->footprint.points.empty()) {
+        const PatchFigures& p = r->footprint.points.back().patch;
+        l.Fz_N = p.Qz_N;
+        l.patch_length_mm = p.patch_length_mm;
+        l.patch_width_mm = p.patch_width_mm;
+        l.deflection_mm = r->deflection_mm;
+        l.loaded_radius_mm = r->loaded_radius_mm;
+      }
+      if (!l.effective_rolling_radius_mm) l.effective_rolling_radius_mm = r->effective_rolling_radius_mm;
+      if (!l.slip_stiffness_N) l.slip_stiffness_N = r->slip_stiffness_N;
+      if (!l.cornering_stiffness_N_per_deg) {
+        l.cornering_stiffness_N_per_deg = r->cornering_stiffness_N_per_deg;
+        l.pneumatic_trail_mm = r->pneumatic_trail_at_zero_mm;
+      }
+    }
     t.loads.push_back(l);
-    const double re = r->effective_rolling_radius_mm.value_or(std::nan(""));
-    // The axle of a held-load point sits higher by the difference of its δz to the footprint's.
-    const auto radius = [&](double deflection) { return r->loaded_radius_mm + (r->deflection_mm - deflection); };
-    for (const RollingStateResult& s : r->states) {
-      if (!s.converged) continue;
-      const Kind kind = s.spec.camber_deg != 0.0 ? Kind::camber : Kind::free;
-      t.rows.push_back(row(kind, l.target_load_N, s.figures, s.slip.value_or(0.0), s.spec.slip_angle_deg,
-                           s.spec.camber_deg, r->loaded_radius_mm, re, s.counts));
-    }
-    for (const SweepPoint& p : r->sweep)
-      t.rows.push_back(row(Kind::slip_sweep, l.target_load_N, p.figures, p.slip, p.slip_angle_deg, p.camber_deg,
-                           radius(p.deflection_mm), re, p.counts));
-    for (const SweepPoint& p : r->angle_sweep) {
-      t.rows.push_back(row(Kind::angle_sweep, l.target_load_N, p.figures, p.slip, p.slip_angle_deg, p.camber_deg,
-                           radius(p.deflection_mm), re, p.counts));
-      t.rows.back().mirrored = p.mirrored;
+    const double re = l.effective_rolling_radius_mm.value_or(std::nan(""));
+    for (const RollingResult* r : series) {
+      // The axle of a held-load point sits higher by the difference of its δz to the footprint's.
+      const auto radius = [&](double deflection) { return r->loaded_radius_mm + (r->deflection_mm - deflection); };
+      for (const RollingStateResult& s : r->states) {
+        if (!s.converged) continue;
+        const Kind kind = s.spec.camber_deg != 0.0 ? Kind::camber : Kind::free;
+        t.rows.push_back(row(kind, l.target_load_N, s.figures, s.slip.value_or(0.0), s.spec.slip_angle_deg,
+                             s.spec.camber_deg, r->loaded_radius_mm, re, s.counts));
+      }
+      for (const SweepPoint& p : r->sweep)
+        t.rows.push_back(row(Kind::slip_sweep, l.target_load_N, p.figures, p.slip, p.slip_angle_deg, p.camber_deg,
+                             radius(p.deflection_mm), re, p.counts));
+      for (const SweepPoint& p : r->angle_sweep) {
+        t.rows.push_back(row(Kind::angle_sweep, l.target_load_N, p.figures, p.slip, p.slip_angle_deg, p.camber_deg,
+                             radius(p.deflection_mm), re, p.counts));
+        t.rows.back().mirrored = p.mirrored;
+      }
     }
   }
   t.vertical = std::move(vertical);

@@ -15,14 +15,22 @@
 
 namespace tirefem {
 
-// The rolling study of the rig at its load number `load_index` (name "<rig>_Fz<N>").
-RollingStudy tyre_test_rolling_study(const TyreTestStudy& study, std::size_t load_index);
+// The rig's two series at a load, independent experiments as on a flat track: the longitudinal one (free
+// rolling, cambered free rolling, the κ sweep) and the lateral one (the α sweep and the cornering
+// stiffness). Each is a rolling study of its own, from the same footprint and free rolling, so the two run
+// side by side.
+enum class TyreTestSeries { longitudinal, lateral };
+
+// The rolling study of one series at the rig's load number `load_index` (name "<rig>_Fz<N>", the lateral
+// series "<rig>_Fz<N>_alpha").
+RollingStudy tyre_test_rolling_study(const TyreTestStudy& study, std::size_t load_index, TyreTestSeries series);
 // The load–deflection curve: a plane pressed from the undeformed tyre, on `vertical_mesh`.
 LoadCurveStudy tyre_test_vertical_study(const TyreTestStudy& study);
 // The half model of the rig's mesh: vertical loading is symmetric about the equatorial plane.
 MeshSettings tyre_test_vertical_mesh(const MeshSettings& rig_mesh);
 
-// The states and sweep points of the whole test (all loads), as run_rolling counts them finished.
+// The states and sweep points of the whole test (all loads and both series; each series solves its own
+// free rolling), as run_rolling counts them finished.
 int tyre_test_points(const TyreTestStudy& study);
 
 // Counts the finished points of a test whose loads run side by side, and estimates the time left from
@@ -83,11 +91,16 @@ struct TyreTestResult {
   std::vector<std::string> failures;
 };
 
-// Gathers the per-load rolling results (in the study's load order; a missing one is a load whose study
-// threw, with its message in `errors`) and the vertical curve.
+// One load's rolling results, a series each (longitudinal, then lateral); a null one is a series whose
+// study threw, with its message at the same place in `errors`.
+struct TyreTestLoadRuns {
+  std::vector<const RollingResult*> series;
+  std::vector<std::string> errors;
+};
+
+// Gathers the per-load rolling results (in the study's load order) and the vertical curve.
 TyreTestResult assemble_tyre_test(const TyreTestStudy& study, double unloaded_radius_mm,
-                                  const std::vector<const RollingResult*>& loads,
-                                  const std::vector<std::string>& errors, std::optional<StaticContactResult> vertical,
-                                  const std::string& vertical_error);
+                                  const std::vector<TyreTestLoadRuns>& loads,
+                                  std::optional<StaticContactResult> vertical, const std::string& vertical_error);
 
 }  // namespace tirefem
