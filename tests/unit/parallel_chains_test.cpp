@@ -1,5 +1,6 @@
 // The studies-side-by-side scheduler: how threads are shared out, that every task runs once and the
-// tasks of a chain in order, and that a failing task stops the others and reaches the caller.
+// tasks of a chain in order, that a failing task stops the others and reaches the caller, and that the last
+// worker running takes the threads of the others.
 #include <atomic>
 #include <chrono>
 #include <mutex>
@@ -8,6 +9,8 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+
+#include <omp.h>
 
 #include "tirefem/analysis/parallel_chains.hpp"
 
@@ -53,6 +56,35 @@ TEST(ParallelChains, AFailingTaskStopsTheRunAndIsRethrown) {
   EXPECT_THROW(run_chains(chains, {2, 1}, stop), std::runtime_error);
   EXPECT_TRUE(stop);
   EXPECT_EQ(after_failure, 0);  // no task starts once the run is stopped
+}
+
+// Two workers of one thread each: the long chain's checkpoints keep one thread while the short chain
+// runs and take both once it has ended; afterwards the caller's own setting is back.
+TEST(ParallelChains, TheLastWorkerRunningTakesTheThreadsOfTheOthers) {
+  const int own = omp_get_max_threads();
+  WorkerShare share(4);
+  std::atomic<bool> short_done{false};
+  std::atomic<int> while_both = -1, when_alone = -1;
+  std::vector<TaskChain> chains(2);
+  chains[0] = {[&] {
+    share.checkpoint();
+    while_both = omp_get_max_threads();
+    for (int i = 0; i < 5000 && !short_done; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    // Until the short chain's worker has returned (at most 5 s).
+    for (int i = 0; i < 5000 && omp_get_max_threads() < 4; ++i) {
+      share.checkpoint();
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    when_alone = omp_get_max_threads();
+  }};
+  chains[1] = {[&] { short_done = true; }};
+  std::atomic<bool> stop{false};
+  run_chains(chains, {2, 1}, stop, &share);
+  EXPECT_EQ(while_both, 1);
+  EXPECT_EQ(when_alone, 4);
+  EXPECT_EQ(omp_get_max_threads(), own);
+  share.checkpoint();  // outside run_chains: no effect
+  EXPECT_EQ(omp_get_max_threads(), own);
 }
 
 }  // namespace

@@ -18,11 +18,19 @@ WorkerPlan plan_workers(int chains, int threads) {
   return plan;
 }
 
-void run_chains(const std::vector<TaskChain>& chains, const WorkerPlan& plan, std::atomic<bool>& stop) {
+void WorkerShare::checkpoint() {
+  if (running_ != 1) return;  // others still running, or not side by side at all
+  // Alone now: the others have returned, so no BLAS call of theirs is under way while the count changes.
+  if (omp_get_max_threads() < threads_) omp_set_num_threads(threads_);  // this thread's own setting
+  if (!blas_widened_.exchange(true)) set_blas_threads(threads_);
+}
+
+void run_chains(const std::vector<TaskChain>& chains, const WorkerPlan& plan, std::atomic<bool>& stop,
+                WorkerShare* share) {
   std::atomic<std::size_t> next{0};
   std::mutex error_mutex;
   std::exception_ptr first_error;
-  const auto work = [&] {
+  const auto run = [&] {
     omp_set_num_threads(plan.threads_per_worker);  // this thread's own setting
     for (std::size_t c = next++; c < chains.size(); c = next++) {
       try {
@@ -38,6 +46,14 @@ void run_chains(const std::vector<TaskChain>& chains, const WorkerPlan& plan, st
       }
     }
   };
+  const auto work = [&] {
+    run();
+    if (share && plan.workers > 1) --share->running_;  // out of chains (or stopped)
+  };
+  if (share) {
+    share->running_ = plan.workers > 1 ? plan.workers : 0;
+    share->blas_widened_ = false;
+  }
   if (plan.workers == 1) {
     work();
   } else {
@@ -51,6 +67,7 @@ void run_chains(const std::vector<TaskChain>& chains, const WorkerPlan& plan, st
     for (std::thread& t : threads) t.join();
     set_blas_threads(blas);
   }
+  if (share) share->running_ = 0;
   if (first_error) std::rethrow_exception(first_error);
 }
 

@@ -19,11 +19,28 @@ struct WorkerPlan {
 // As many workers as there are chains and threads (OpenMP's maximum), the threads shared out evenly.
 WorkerPlan plan_workers(int chains, int threads);
 
+// The workers of one run_chains that still have chains to run. A worker left alone takes the threads of
+// those that ran out (OpenMP and BLAS) at its next checkpoint: the last study of a run does not finish on
+// one core while the other idles.
+class WorkerShare {
+ public:
+  explicit WorkerShare(int threads) : threads_(threads) {}
+  // From a worker's own thread, between solver steps (where its study reports progress).
+  void checkpoint();
+
+ private:
+  friend void run_chains(const std::vector<TaskChain>&, const WorkerPlan&, std::atomic<bool>&, WorkerShare*);
+  int threads_;
+  std::atomic<int> running_{0};  // 0: not running side by side (one worker, or outside run_chains)
+  std::atomic<bool> blas_widened_{false};
+};
+
 // Runs the chains on plan.workers threads, each taking the next chain in order when it becomes free. A
 // worker runs its OpenMP loops on threads_per_worker threads, and with more than one worker the BLAS
 // runs single-threaded in each (restored afterwards). An exception from a task ends its chain and sets
 // `stop` (the other tasks poll it between solver steps and end early); once every worker has returned
-// the first exception is rethrown.
-void run_chains(const std::vector<TaskChain>& chains, const WorkerPlan& plan, std::atomic<bool>& stop);
+// the first exception is rethrown. With `share`, the last worker running widens to all threads (above).
+void run_chains(const std::vector<TaskChain>& chains, const WorkerPlan& plan, std::atomic<bool>& stop,
+                WorkerShare* share = nullptr);
 
 }  // namespace tirefem

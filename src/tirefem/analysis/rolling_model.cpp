@@ -174,6 +174,7 @@ RollingModel::Attempt RollingModel::continuation(const FrictionLaw& law, const P
   };
   std::vector<int> path;  // indices in known_ of the start state and the converged stages
   if (from_index >= 0) path.push_back(from_index);
+  int converged_stage_iterations = 0;  // Newton iterations of the stages that converged
   while (done < 1.0) {
     if (newton_->total_iterations() - newton0 > budget) {
       a.failure = fmt::format("gave up after {} Newton iterations (contact.max_state_iterations), {:.0f}% of the "
@@ -209,6 +210,22 @@ RollingModel::Attempt RollingModel::continuation(const FrictionLaw& law, const P
       continue;
     }
     if (t < 1.0) report(t, p, fmt::format("converged in {} Newton iterations", a.last.newton_iterations));
+    // The pace of the converged stages (their own Newton iterations per share of the way, failed attempts
+    // left out) must bring the state within its bound, else it gives up now rather than at the bound.
+    // Measured on the tyre-test example's 5550 N lateral series (80 × 46 full): α 2.2° → 3.92° went on
+    // in stages of 2–5% of the way for 537 s and 260 Newton iterations before giving up at 5%; its first
+    // converged stage (2% in 10 iterations, after 89 in failed attempts) projects 476 more. The states
+    // that converged there project at most 186 in all (8.82° at 3700 N: 96 iterations).
+    converged_stage_iterations += a.last.newton_iterations;
+    const int used = newton_->total_iterations() - newton0;
+    const double more = converged_stage_iterations / t * (1.0 - t);
+    if (t < 1.0 && used + more > budget) {
+      a.failure = fmt::format("gave up after {} Newton iterations, {:.0f}% of the way from its start state: at the "
+                              "pace of its converged stages it would need about {:.0f} more, beyond "
+                              "contact.max_state_iterations ({})",
+                              used, 100 * t, more, budget);
+      break;
+    }
     previous_u = std::move(u);
     previous_t = done;
     u = std::move(trial);

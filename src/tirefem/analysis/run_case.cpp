@@ -113,10 +113,14 @@ struct StudyRun {
 // at its next progress line.
 class StudyProgress {
  public:
-  StudyProgress(const ProgressSink& progress, const std::atomic<bool>& stop) : progress_(progress), stop_(stop) {}
+  StudyProgress(const ProgressSink& progress, const std::atomic<bool>& stop, WorkerShare& share)
+      : progress_(progress), stop_(stop), share_(share) {}
+  // Called in the study's own thread between solver steps: where a stop takes effect, and where the last
+  // study running takes the threads of the workers that ran out of studies.
   ProgressSink sink(const std::string& name, bool prefixed) {
     return [this, prefix = prefixed ? "[" + name + "] " : std::string()](const std::string& message) {
       if (stop_) throw RunInterrupted();
+      share_.checkpoint();
       const std::lock_guard lock(mutex_);
       if (progress_) progress_(prefix + message);
     };
@@ -125,6 +129,7 @@ class StudyProgress {
  private:
   ProgressSink progress_;
   const std::atomic<bool>& stop_;
+  WorkerShare& share_;
   std::mutex mutex_;
 };
 }  // namespace
@@ -248,7 +253,8 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
   std::map<std::string, std::size_t> chain_of_footprint;
   SharedFootprints footprints;
   std::atomic<bool> stop{false};
-  StudyProgress study_progress(progress, stop);
+  WorkerShare share(omp_get_max_threads());
+  StudyProgress study_progress(progress, stop, share);
   bool prefixed = false;  // known once the chains are counted; the tasks read it when they run
   // A study that throws (e.g. its first contact state does not converge) stops short like one whose load
   // path ends early; the other studies go on.
@@ -377,7 +383,7 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
                                  study_count, plan.workers, plan.threads_per_worker,
                                  plan.threads_per_worker > 1 ? "s" : ""));
   const auto studies_start = std::chrono::steady_clock::now();
-  run_chains(chains, plan, stop);
+  run_chains(chains, plan, stop, &share);
   const double studies_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - studies_start).count();
 
   // Results in the case's order.
