@@ -56,7 +56,11 @@ InflationResult run_inflation_from(const TyreMesh& tyre_mesh, const InflationSet
                                    const TyreMesh& from, const Eigen::VectorXd& inflated_from,
                                    const ProgressSink& progress = {});
 // The displacement of `from`'s first node row turned onto every node row of `to` (meshes of one tyre with
-// the same meridional stations; throws otherwise): an axisymmetric state carried to another mesh.
+// the same meridional stations; throws otherwise): an axisymmetric state carried to another mesh. A half
+// model's state goes onto the full model of its stations as itself and its mirror image (a state symmetric
+// about the wheel plane, as the inflated one is).
 Eigen::VectorXd turned_onto(const TyreMesh& from, const Eigen::VectorXd& displacement, const TyreMesh& to);
+// Whether turned_onto carries a state of `from` onto `to`.
+bool turns_onto(const TyreMesh& from, const TyreMesh& to);
 
 }  // namespace tirefem

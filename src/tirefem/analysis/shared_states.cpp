@@ -23,14 +23,30 @@ const InflationResult& InflatedTyres::inflated(const MeshSettings& m) {
   Entry& e = entry(m);
   if (!e.inflated) {
     // Another mesh's inflated state on the same meridional stations is a close start (the inflated tyre
-    // is axisymmetric).
+    // is axisymmetric), a half model's for a full one too (it is symmetric about the wheel plane).
     const TyreMesh& tm = mesh(m);
-    const Entry* near = nullptr;
-    for (const auto& [key, other] : entries_)
-      if (&other != &e && other.inflated && other.inflated->converged &&
-          other.inflated->kinematics == Kinematics::nonlinear && other.mesh->half_model == tm.half_model &&
-          other.mesh->mesh.u_values == tm.mesh.u_values)
-        near = &other;
+    const auto near_state = [&]() -> const Entry* {
+      const Entry* found = nullptr;
+      for (const auto& [key, other] : entries_)
+        if (&other != &e && other.inflated && other.inflated->converged &&
+            other.inflated->kinematics == Kinematics::nonlinear && turns_onto(*other.mesh, tm) &&
+            (!found || other.mesh->half_model == tm.half_model))
+          found = &other;
+      return found;
+    };
+    const Entry* near = near_state();
+    // A full model without one: its half model first (half the equations, itself perhaps started from
+    // another half model), then its mirror image. Measured on the tyre-test example's 80 × 46 full
+    // model: 14.1 s from the pressure ramp.
+    if (!near && !tm.half_model) {
+      MeshSettings half = m;
+      half.half_model = true;
+      try {
+        inflated(half);
+        near = near_state();
+      } catch (const std::runtime_error&) {
+      }
+    }
     InflationSettings nonlinear = case_.inflation;
     nonlinear.linear = false;
     e.inflated = near ? run_inflation_from(tm, nonlinear, *near->mesh, near->inflated->displacement, progress_)
