@@ -188,5 +188,24 @@ TEST(IoPlotWriter, GnuplotErrorIsReported) {
   }
 }
 
+// In the background, two at a time: every plot is rendered, and the one gnuplot fails on comes back from
+// finish() named by its script (the others are not affected).
+TEST(IoPlotWriter, BackgroundRendersReportTheFailedScript) {
+  if (!gnuplot_on_path()) GTEST_SKIP() << "gnuplot is not on PATH";
+  ScratchDir scratch;
+  PlotRenderer renderer(2);
+  Plot broken = load_deflection();
+  broken.series[0].style = "nosuchstyle";
+  EXPECT_TRUE(write_plot(scratch.path / "first", load_deflection(), renderer));
+  EXPECT_TRUE(write_plot(scratch.path / "broken", broken, renderer));
+  for (const char* name : {"second", "third"}) EXPECT_TRUE(write_plot(scratch.path / name, load_deflection(), renderer));
+  const std::vector<PlotRenderer::Failure> failed = renderer.finish();
+  ASSERT_EQ(failed.size(), 1u);
+  EXPECT_EQ(failed[0].script.filename(), "broken.gp");
+  EXPECT_NE(failed[0].message.find("gnuplot failed"), std::string::npos) << failed[0].message;
+  for (const char* name : {"first", "second", "third"}) expect_rendered(scratch.path / name);
+  EXPECT_TRUE(renderer.finish().empty());  // reported once
+}
+
 }  // namespace
 }  // namespace tirefem

@@ -20,9 +20,7 @@ WorkerPlan plan_workers(int chains, int threads) {
 
 void WorkerShare::checkpoint() {
   if (running_ != 1) return;  // others still running, or not side by side at all
-  // Alone now: the others have returned, so no BLAS call of theirs is under way while the count changes.
   if (omp_get_max_threads() < threads_) omp_set_num_threads(threads_);  // this thread's own setting
-  if (!blas_widened_.exchange(true)) set_blas_threads(threads_);
 }
 
 void run_chains(const std::vector<TaskChain>& chains, const WorkerPlan& plan, std::atomic<bool>& stop,
@@ -50,10 +48,7 @@ void run_chains(const std::vector<TaskChain>& chains, const WorkerPlan& plan, st
     run();
     if (share && plan.workers > 1) --share->running_;  // out of chains (or stopped)
   };
-  if (share) {
-    share->running_ = plan.workers > 1 ? plan.workers : 0;
-    share->blas_widened_ = false;
-  }
+  if (share) share->running_ = plan.workers > 1 ? plan.workers : 0;
   if (plan.workers == 1) {
     work();
   } else {

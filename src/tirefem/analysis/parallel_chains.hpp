@@ -20,8 +20,10 @@ struct WorkerPlan {
 WorkerPlan plan_workers(int chains, int threads);
 
 // The workers of one run_chains that still have chains to run. A worker left alone takes the threads of
-// those that ran out (OpenMP and BLAS) at its next checkpoint: the last study of a run does not finish on
-// one core while the other idles.
+// those that ran out for its OpenMP loops (the assembly, GMRES's products) at its next checkpoint: the last
+// study of a run does not assemble on one core while the other idles. Its BLAS stays on one thread: the
+// BLAS's round-off depends on its thread count, and the moment a worker is left alone varies from run to
+// run, while the OpenMP loops give the same sums on any number of threads.
 class WorkerShare {
  public:
   explicit WorkerShare(int threads) : threads_(threads) {}
@@ -32,7 +34,6 @@ class WorkerShare {
   friend void run_chains(const std::vector<TaskChain>&, const WorkerPlan&, std::atomic<bool>&, WorkerShare*);
   int threads_;
   std::atomic<int> running_{0};  // 0: not running side by side (one worker, or outside run_chains)
-  std::atomic<bool> blas_widened_{false};
 };
 
 // Runs the chains on plan.workers threads, each taking the next chain in order when it becomes free. A

@@ -116,7 +116,7 @@ class StudyProgress {
   StudyProgress(const ProgressSink& progress, const std::atomic<bool>& stop, WorkerShare& share)
       : progress_(progress), stop_(stop), share_(share) {}
   // Called in the study's own thread between solver steps: where a stop takes effect, and where the last
-  // study running takes the threads of the workers that ran out of studies.
+  // study running takes the threads of the workers that ran out of studies (for its assembly).
   ProgressSink sink(const std::string& name, bool prefixed) {
     return [this, prefix = prefixed ? "[" + name + "] " : std::string()](const std::string& message) {
       if (stop_) throw RunInterrupted();
@@ -477,13 +477,15 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     rig_summaries.push_back(report_tyre_test(folder, plots, progress, c, t));
   }
   if (!c.tyre_tests.empty()) summary.insert("tyre_tests", std::move(rig_summaries));
+  // The plots still rendering in the background are waited for here (a failed one is a skipped report).
+  std::vector<std::string> skipped_reports = inflation_plots.skipped();
+  const std::vector<std::string>& skipped_plots = plots.skipped();
+  skipped_reports.insert(skipped_reports.end(), skipped_plots.begin(), skipped_plots.end());
   times.end();
   const bool completed = incomplete.empty();
   summary.insert("completed", completed);
   if (!incomplete.empty()) summary.insert("incomplete", std::move(incomplete));
   toml::array skipped;
-  std::vector<std::string> skipped_reports = inflation_plots.skipped();
-  skipped_reports.insert(skipped_reports.end(), plots.skipped().begin(), plots.skipped().end());
   for (const std::string& m : skipped_reports) skipped.push_back(m);
   if (!skipped.empty()) summary.insert("skipped_reports", std::move(skipped));
 

@@ -18,11 +18,16 @@ namespace tirefem {
 
 void ReportWriter::plot(const std::string& stem, const Plot& p) {
   if (p.series.empty()) return skip(stem, "nothing to plot");
-  note(write_plot(folder_.path("plots/" + stem), p));
+  note(write_plot(folder_.path("plots/" + stem), p, renderer_));
 }
 
 void ReportWriter::heatmap(const std::string& stem, const HeatMap& m) {
-  note(write_heatmap(folder_.path("plots/" + stem), m));
+  note(write_heatmap(folder_.path("plots/" + stem), m, renderer_));
+}
+
+const std::vector<std::string>& ReportWriter::skipped() {
+  for (const PlotRenderer::Failure& f : renderer_.finish()) skip(f.script.stem().string(), f.message);
+  return skipped_;
 }
 
 void ReportWriter::skip(const std::string& name, const std::string& why) {

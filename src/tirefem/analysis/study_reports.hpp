@@ -16,9 +16,9 @@
 
 namespace tirefem {
 
-// Writes the plots (gnuplot may be missing: warn once) and guards every report: a report that cannot be
-// made (e.g. no ply, hence no cord tension to plot) is skipped with a note, never a failure that would
-// discard the solve.
+// Writes the plots (gnuplot may be missing: warn once; it renders in the background while the other files
+// are written) and guards every report: a report that cannot be made (e.g. no ply, hence no cord tension
+// to plot) is skipped with a note, never a failure that would discard the solve.
 class ReportWriter {
  public:
   ReportWriter(const ResultsFolder& folder, const ProgressSink& progress) : folder_(folder), progress_(progress) {}
@@ -35,7 +35,8 @@ class ReportWriter {
       skip(report_name, e.what());
     }
   }
-  const std::vector<std::string>& skipped() const { return skipped_; }
+  // The reports skipped, once every plot started has been rendered (a failed render is a plot skipped).
+  const std::vector<std::string>& skipped();
 
  private:
   void skip(const std::string& name, const std::string& why);
@@ -44,6 +45,7 @@ class ReportWriter {
   ProgressSink progress_;
   bool warned_ = false;
   std::vector<std::string> skipped_;
+  PlotRenderer renderer_;
 };
 
 // Everything about one loaded state: VTU of the shell and the support, the tread points, the pressure

@@ -10,6 +10,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string_view>
+#include <utility>
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -76,9 +77,9 @@ std::optional<fs::path> find_on_path(std::string_view program) {
   }
 }
 
-// Runs `gnuplot <script name>` inside the script's folder, with no shell in between; throws with gnuplot's
-// error output if it fails.
-void run_gnuplot(const fs::path& gnuplot, const fs::path& script) {
+// Starts `gnuplot <script name>` inside the script's folder, with no shell in between; its stderr is read
+// from the returned descriptor. Throws if it cannot be started.
+std::pair<pid_t, int> spawn_gnuplot(const fs::path& gnuplot, const fs::path& script) {
   const fs::path folder = script.has_parent_path() ? script.parent_path() : fs::path(".");
   const std::string name = script.filename().string();
 
@@ -103,35 +104,41 @@ void run_gnuplot(const fs::path& gnuplot, const fs::path& script) {
     throw std::runtime_error(
         fmt::format("cannot run '{}' for '{}': {}", program, script.string(), std::strerror(spawn_error)));
   }
+  return {pid, pipe_fds[0]};
+}
 
+// Reads gnuplot's stderr to its end and waits for it; gnuplot's messages if it failed, else nothing.
+std::optional<std::string> collect_gnuplot(pid_t pid, int error_fd, const fs::path& script) {
   std::string messages;
   char chunk[4096];
   while (true) {
-    const ssize_t n = ::read(pipe_fds[0], chunk, sizeof chunk);
+    const ssize_t n = ::read(error_fd, chunk, sizeof chunk);
     if (n > 0)
       messages.append(chunk, static_cast<std::size_t>(n));
     else if (n == 0 || errno != EINTR)
       break;
   }
-  ::close(pipe_fds[0]);
+  ::close(error_fd);
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    while (!messages.empty() && (messages.back() == '\n' || messages.back() == ' ')) messages.pop_back();
-    throw std::runtime_error(fmt::format("gnuplot failed on '{}' (exit status {}): {}", script.string(),
-                                         WIFEXITED(status) ? WEXITSTATUS(status) : -1, messages));
-  }
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return std::nullopt;
+  while (!messages.empty() && (messages.back() == '\n' || messages.back() == ' ')) messages.pop_back();
+  return fmt::format("gnuplot failed on '{}' (exit status {}): {}", script.string(),
+                     WIFEXITED(status) ? WEXITSTATUS(status) : -1, messages);
 }
 
-// Writes the script and data, then renders if gnuplot is available.
-bool write_and_render(const fs::path& stem, const Buffer& script, const Buffer& data) {
+// Writes the script and data, then renders if gnuplot is available (now, or by `renderer`).
+bool write_and_render(const fs::path& stem, const Buffer& script, const Buffer& data,
+                      PlotRenderer* renderer) {
   const fs::path gp = with_suffix(stem, ".gp");
   write_text_file(with_suffix(stem, ".dat"), data);
   write_text_file(gp, script);
-  const std::optional<fs::path> gnuplot = find_on_path("gnuplot");
-  if (!gnuplot) return false;
-  run_gnuplot(*gnuplot, gp);
+  if (renderer) return renderer->start(gp);
+  PlotRenderer now(1);
+  if (!now.start(gp)) return false;
+  const std::vector<PlotRenderer::Failure> failed = now.finish();
+  if (!failed.empty()) throw std::runtime_error(failed.front().message);
   return true;
 }
 
@@ -176,7 +183,9 @@ void check_style(std::string_view plot_title, std::string_view series_title, std
 
 }  // namespace
 
-bool write_plot(const fs::path& stem, const Plot& plot) {
+namespace {
+
+bool write_plot_with(const fs::path& stem, const Plot& plot, PlotRenderer* renderer) {
   if (plot.series.empty()) throw std::invalid_argument(fmt::format("plot '{}' has no series", plot.title));
   bool any_point = false;
   for (const PlotSeries& s : plot.series) {
@@ -212,10 +221,10 @@ bool write_plot(const fs::path& stem, const Plot& plot) {
                            command == "plot" ? " " : ", \\\n     ", k, s.style, gnuplot_string(s.title));
   }
   write_render_block(gp, stem, command);
-  return write_and_render(stem, gp, data);
+  return write_and_render(stem, gp, data, renderer);
 }
 
-bool write_heatmap(const fs::path& stem, const HeatMap& map) {
+bool write_heatmap_with(const fs::path& stem, const HeatMap& map, PlotRenderer* renderer) {
   if (map.x.size() < 2 || map.y.size() < 2)
     throw std::invalid_argument(
         fmt::format("heat map '{}' needs at least 2 x and 2 y grid values, has {} and {}", map.title,
@@ -278,7 +287,47 @@ bool write_heatmap(const fs::path& stem, const HeatMap& map) {
     fmt::format_to(o, "set key below\n");
     write_render_block(gp, stem, "splot data index 0 using 1:2:3 with pm3d notitle" + overlay_command);
   }
-  return write_and_render(stem, gp, data);
+  return write_and_render(stem, gp, data, renderer);
+}
+
+}  // namespace
+
+bool write_plot(const fs::path& stem, const Plot& plot) { return write_plot_with(stem, plot, nullptr); }
+bool write_heatmap(const fs::path& stem, const HeatMap& map) { return write_heatmap_with(stem, map, nullptr); }
+bool write_plot(const fs::path& stem, const Plot& plot, PlotRenderer& renderer) {
+  return write_plot_with(stem, plot, &renderer);
+}
+bool write_heatmap(const fs::path& stem, const HeatMap& map, PlotRenderer& renderer) {
+  return write_heatmap_with(stem, map, &renderer);
+}
+
+PlotRenderer::~PlotRenderer() {
+  while (!running_.empty()) wait_oldest();
+}
+
+bool PlotRenderer::start(const fs::path& script) {
+  if (!gnuplot_) gnuplot_ = find_on_path("gnuplot");
+  if (!*gnuplot_) return false;
+  while (static_cast<int>(running_.size()) >= std::max(1, at_once_)) wait_oldest();
+  try {
+    const auto [pid, error_fd] = spawn_gnuplot(**gnuplot_, script);
+    running_.push_back({script, pid, error_fd});
+  } catch (const std::runtime_error& e) {
+    failures_.push_back({script, e.what()});
+  }
+  return true;
+}
+
+void PlotRenderer::wait_oldest() {
+  const Running r = running_.front();
+  running_.pop_front();
+  if (std::optional<std::string> message = collect_gnuplot(r.pid, r.error_fd, r.script))
+    failures_.push_back({r.script, std::move(*message)});
+}
+
+std::vector<PlotRenderer::Failure> PlotRenderer::finish() {
+  while (!running_.empty()) wait_oldest();
+  return std::exchange(failures_, {});
 }
 
 }  // namespace tirefem

@@ -6,9 +6,13 @@
 //
 // Texts (titles, labels, legend) are printed literally (no enhanced-text markup: "s_mm" shows an
 // underscore, not a subscript); UTF-8 is fine ("°", "²").
+#include <deque>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include <sys/types.h>
 
 namespace tirefem {
 
@@ -38,6 +42,37 @@ struct HeatMap {
   std::vector<PlotSeries> overlays;
 };
 
+// gnuplot runs on the scripts in the background, at most `at_once` at a time, while the caller goes on
+// writing (a results folder has some 35 plots at about 0.1 s of gnuplot each).
+class PlotRenderer {
+ public:
+  struct Failure {
+    std::filesystem::path script;
+    std::string message;  // gnuplot's, or why it could not be started
+  };
+  explicit PlotRenderer(int at_once = 2) : at_once_(at_once) {}
+  PlotRenderer(const PlotRenderer&) = delete;
+  PlotRenderer& operator=(const PlotRenderer&) = delete;
+  ~PlotRenderer();  // waits for the renders still running
+  // Starts gnuplot on `script` in the script's folder, once fewer than `at_once` run. False when no
+  // `gnuplot` executable is on PATH (nothing started).
+  bool start(const std::filesystem::path& script);
+  // Waits for every render started; returns those that failed since the last call.
+  std::vector<Failure> finish();
+
+ private:
+  struct Running {
+    std::filesystem::path script;
+    pid_t pid;
+    int error_fd;  // gnuplot's stderr
+  };
+  void wait_oldest();
+  int at_once_;
+  std::optional<std::optional<std::filesystem::path>> gnuplot_;  // looked up on the first start
+  std::deque<Running> running_;
+  std::vector<Failure> failures_;
+};
+
 // Write stem.gp and stem.dat, then run gnuplot on them. Returns true when stem.png and stem.svg were
 // rendered, false when no `gnuplot` executable is on PATH (the script and data are still written, so the
 // caller can warn and the user can render later). Throws std::invalid_argument naming the plot and the
@@ -45,5 +80,9 @@ struct HeatMap {
 // std::runtime_error with gnuplot's messages when gnuplot fails.
 bool write_plot(const std::filesystem::path& stem, const Plot& plot);
 bool write_heatmap(const std::filesystem::path& stem, const HeatMap& map);
+// The same, rendered by `renderer` in the background: true when a render was started; its failure, if
+// any, comes from renderer.finish().
+bool write_plot(const std::filesystem::path& stem, const Plot& plot, PlotRenderer& renderer);
+bool write_heatmap(const std::filesystem::path& stem, const HeatMap& map, PlotRenderer& renderer);
 
 }  // namespace tirefem
