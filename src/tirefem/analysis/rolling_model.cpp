@@ -216,9 +216,10 @@ RollingModel::Attempt RollingModel::continuation(const FrictionLaw& law, const P
     // its step) must bring the state within its bound, else it gives up now rather than at the bound.
     // Measured on the tyre-test example's 5550 N lateral series (80 × 46 full), α 2.2° → 3.92°: stages
     // converged at 8% (6 iterations, after 71 in failed attempts), 12% and 15% of the way, with failures
-    // between them, and it gave up at the bound's pace test after 214 iterations (455 s); this pace,
-    // 56 iterations for 12%, projects 411 more at 127 (264 s). The states that converged on that rig
-    // project at most 161 in all (8.82° at 3700 N: 96 iterations; its first stage converged after 22).
+    // between them, and it gave up at the pace test of the converged stages alone after 214 iterations
+    // (455 s); counted this way it gives up at 12%, after 127 (about 392 more projected; the whole rig
+    // 787 → 666 s). The states that converged on that rig project at most 161 in all (8.82° at 3700 N:
+    // 96 iterations; its first stage converged after 22).
     if (paced_from < 0) paced_from = attempt_start;
     const int used = newton_->total_iterations() - newton0;
     const double more = (used - paced_from) / t * (1.0 - t);

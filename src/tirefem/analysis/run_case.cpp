@@ -227,8 +227,9 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
   }
   for (const TyreTestStudy& s : c.tyre_tests) {
     try {
-      tyres.inflated(s.mesh.value_or(c.mesh));
+      // The half model first: the full model then starts from its mirror image, row by row.
       tyres.inflated(tyre_test_vertical_mesh(s.mesh.value_or(c.mesh)));
+      tyres.inflated(s.mesh.value_or(c.mesh));
     } catch (const std::runtime_error&) {
     }
   }

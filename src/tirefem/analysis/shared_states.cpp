@@ -25,12 +25,17 @@ const InflationResult& InflatedTyres::inflated(const MeshSettings& m) {
     // Another mesh's inflated state on the same meridional stations is a close start (the inflated tyre
     // is axisymmetric), a half model's for a full one too (it is symmetric about the wheel plane).
     const TyreMesh& tm = mesh(m);
+    // Of several, one on the same circumferential stations (its rows carried over without a turn, exact for
+    // a half model's mirror image), else one of the same kind (half or full).
+    const auto rank = [&](const Entry& other) {
+      return 2 * (other.mesh->mesh.v_values == tm.mesh.v_values) + (other.mesh->half_model == tm.half_model);
+    };
     const auto near_state = [&]() -> const Entry* {
       const Entry* found = nullptr;
       for (const auto& [key, other] : entries_)
         if (&other != &e && other.inflated && other.inflated->converged &&
             other.inflated->kinematics == Kinematics::nonlinear && turns_onto(*other.mesh, tm) &&
-            (!found || other.mesh->half_model == tm.half_model))
+            (!found || rank(other) > rank(*found)))
           found = &other;
       return found;
     };
