@@ -196,9 +196,9 @@ TEST(IoPlotWriter, BackgroundRendersReportTheFailedScript) {
   PlotRenderer renderer(2);
   Plot broken = load_deflection();
   broken.series[0].style = "nosuchstyle";
-  EXPECT_TRUE(write_plot(scratch.path / "first", load_deflection(), renderer));
-  EXPECT_TRUE(write_plot(scratch.path / "broken", broken, renderer));
-  for (const char* name : {"second", "third"}) EXPECT_TRUE(write_plot(scratch.path / name, load_deflection(), renderer));
+  EXPECT_TRUE(write_plot(scratch.path / "first", load_deflection(), &renderer));
+  EXPECT_TRUE(write_plot(scratch.path / "broken", broken, &renderer));
+  for (const char* name : {"second", "third"}) EXPECT_TRUE(write_plot(scratch.path / name, load_deflection(), &renderer));
   const std::vector<PlotRenderer::Failure> failed = renderer.finish();
   ASSERT_EQ(failed.size(), 1u);
   EXPECT_EQ(failed[0].script.filename(), "broken.gp");

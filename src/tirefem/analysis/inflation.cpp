@@ -132,7 +132,8 @@ Eigen::VectorXd turned_onto(const TyreMesh& from, const Eigen::VectorXd& displac
   // of a full mesh from a half one: the mirror image in the wheel plane (x → −x), then the turn.
   // A full model from its half on the same circumferential stations: each row takes its own (no turn),
   // exact where the state is not quite axisymmetric (elements refined towards the patch).
-  const bool same_rows = from.half_model && !to.half_model && from.mesh.v_values == to.mesh.v_values;
+  const bool mirror = from.half_model && !to.half_model;
+  const bool same_rows = mirror && from.mesh.v_values == to.mesh.v_values;
   const auto angle = [](const Eigen::Vector3d& p, double axis_z) { return std::atan2(p.y(), axis_z - p.z()); };
   Eigen::VectorXd u = Eigen::VectorXd::Zero(to.mesh.dof_count());
   for (int j = 0; j < to.mesh.v_nodes(); ++j)
@@ -140,7 +141,7 @@ Eigen::VectorXd turned_onto(const TyreMesh& from, const Eigen::VectorXd& displac
       const int p = to.mesh.pair_index(i, j), q = from.mesh.pair_index(columns[i], same_rows ? j : 0);
       const double turn = angle(to.mesh.inner_nodes[p], to.axis_z) - angle(from.mesh.inner_nodes[q], from.axis_z);
       Eigen::Matrix3d r = Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitX()).toRotationMatrix();
-      if (from.half_model && !to.half_model && to.mesh.u_values[i] < 0) r.col(0) *= -1.0;
+      if (mirror && to.mesh.u_values[i] < 0) r.col(0) *= -1.0;
       u.segment<3>(6 * p) = r * displacement.segment<3>(6 * q);
       u.segment<3>(6 * p + 3) = r * displacement.segment<3>(6 * q + 3);
     }

@@ -18,11 +18,11 @@ namespace tirefem {
 
 void ReportWriter::plot(const std::string& stem, const Plot& p) {
   if (p.series.empty()) return skip(stem, "nothing to plot");
-  note(write_plot(folder_.path("plots/" + stem), p, renderer_));
+  note(write_plot(folder_.path("plots/" + stem), p, &renderer_));
 }
 
 void ReportWriter::heatmap(const std::string& stem, const HeatMap& m) {
-  note(write_heatmap(folder_.path("plots/" + stem), m, renderer_));
+  note(write_heatmap(folder_.path("plots/" + stem), m, &renderer_));
 }
 
 const std::vector<std::string>& ReportWriter::skipped() {

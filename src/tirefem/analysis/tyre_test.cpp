@@ -1,5 +1,6 @@
 #include "tirefem/analysis/tyre_test.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -105,28 +106,28 @@ TyreTestResult assemble_tyre_test(const TyreTestStudy& study, double unloaded_ra
   for (std::size_t i = 0; i < study.load_factors.size(); ++i) {
     TyreTestLoad l;
     l.target_load_N = study.load_factors[i] * study.nominal_load;
-    const TyreTestLoadRuns runs = i < loads.size() ? loads[i] : TyreTestLoadRuns{};
-    std::vector<const RollingResult*> series;  // those that ran
-    l.completed = !runs.series.empty();
-    for (std::size_t j = 0; j < runs.series.size(); ++j) {
-      const RollingResult* r = runs.series[j];
-      const std::string error = j < runs.errors.size() && !runs.errors[j].empty() ? runs.errors[j] : "not run";
-      const std::string failure = r ? r->failure : error;
-      if (!r || !r->completed) {
-        l.completed = false;
-        if (l.failure.empty()) l.failure = failure;
-        t.failures.push_back(fmt::format("load {:.0f} N: {}", l.target_load_N, failure));
-      }
+    // Each series that ran, and a failure for each that did not complete (a load without any: "not run").
+    const TyreTestLoadRuns none;
+    const TyreTestLoadRuns& runs = i < loads.size() ? loads[i] : none;
+    std::vector<const RollingResult*> series;
+    l.completed = true;
+    for (std::size_t j = 0; j < std::max<std::size_t>(runs.series.size(), 1); ++j) {
+      const RollingResult* r = j < runs.series.size() ? runs.series[j] : nullptr;
       if (r) series.push_back(r);
-    }
-    if (runs.series.empty()) {
-      l.failure = "not run";
-      t.failures.push_back(fmt::format("load {:.0f} N: not run", l.target_load_N));
+      if (r && r->completed) continue;
+      const std::string failure = r                                                 ? r->failure
+                                  : j < runs.errors.size() && !runs.errors[j].empty() ? runs.errors[j]
+                                                                                      : "not run";
+      l.completed = false;
+      if (l.failure.empty()) l.failure = failure;
+      t.failures.push_back(fmt::format("load {:.0f} N: {}", l.target_load_N, failure));
     }
     // The footprint, the radii and the slip stiffness: the same in both series (the same footprint and free
     // rolling), taken from the first that has them; the cornering stiffness from the lateral one.
+    bool footprint = false;
     for (const RollingResult* r : series) {
-      if (l.Fz_N == 0.0 && !r->footprint.points.empty()) {
+      if (!footprint && !r->footprint.points.empty()) {
+        footprint = true;
         const PatchFigures& p = r->footprint.points.back().patch;
         l.Fz_N = p.Qz_N;
         l.patch_length_mm = p.patch_length_mm;

@@ -183,9 +183,7 @@ void check_style(std::string_view plot_title, std::string_view series_title, std
 
 }  // namespace
 
-namespace {
-
-bool write_plot_with(const fs::path& stem, const Plot& plot, PlotRenderer* renderer) {
+bool write_plot(const fs::path& stem, const Plot& plot, PlotRenderer* renderer) {
   if (plot.series.empty()) throw std::invalid_argument(fmt::format("plot '{}' has no series", plot.title));
   bool any_point = false;
   for (const PlotSeries& s : plot.series) {
@@ -224,7 +222,7 @@ bool write_plot_with(const fs::path& stem, const Plot& plot, PlotRenderer* rende
   return write_and_render(stem, gp, data, renderer);
 }
 
-bool write_heatmap_with(const fs::path& stem, const HeatMap& map, PlotRenderer* renderer) {
+bool write_heatmap(const fs::path& stem, const HeatMap& map, PlotRenderer* renderer) {
   if (map.x.size() < 2 || map.y.size() < 2)
     throw std::invalid_argument(
         fmt::format("heat map '{}' needs at least 2 x and 2 y grid values, has {} and {}", map.title,
@@ -288,17 +286,6 @@ bool write_heatmap_with(const fs::path& stem, const HeatMap& map, PlotRenderer* 
     write_render_block(gp, stem, "splot data index 0 using 1:2:3 with pm3d notitle" + overlay_command);
   }
   return write_and_render(stem, gp, data, renderer);
-}
-
-}  // namespace
-
-bool write_plot(const fs::path& stem, const Plot& plot) { return write_plot_with(stem, plot, nullptr); }
-bool write_heatmap(const fs::path& stem, const HeatMap& map) { return write_heatmap_with(stem, map, nullptr); }
-bool write_plot(const fs::path& stem, const Plot& plot, PlotRenderer& renderer) {
-  return write_plot_with(stem, plot, &renderer);
-}
-bool write_heatmap(const fs::path& stem, const HeatMap& map, PlotRenderer& renderer) {
-  return write_heatmap_with(stem, map, &renderer);
 }
 
 PlotRenderer::~PlotRenderer() {

@@ -77,12 +77,9 @@ class PlotRenderer {
 // rendered, false when no `gnuplot` executable is on PATH (the script and data are still written, so the
 // caller can warn and the user can render later). Throws std::invalid_argument naming the plot and the
 // series for inconsistent input, std::runtime_error naming the file for I/O failure, and
-// std::runtime_error with gnuplot's messages when gnuplot fails.
-bool write_plot(const std::filesystem::path& stem, const Plot& plot);
-bool write_heatmap(const std::filesystem::path& stem, const HeatMap& map);
-// The same, rendered by `renderer` in the background: true when a render was started; its failure, if
-// any, comes from renderer.finish().
-bool write_plot(const std::filesystem::path& stem, const Plot& plot, PlotRenderer& renderer);
-bool write_heatmap(const std::filesystem::path& stem, const HeatMap& map, PlotRenderer& renderer);
+// std::runtime_error with gnuplot's messages when gnuplot fails. With a `renderer`, gnuplot runs in the
+// background: true then means a render was started, and its failure, if any, comes from renderer->finish().
+bool write_plot(const std::filesystem::path& stem, const Plot& plot, PlotRenderer* renderer = nullptr);
+bool write_heatmap(const std::filesystem::path& stem, const HeatMap& map, PlotRenderer* renderer = nullptr);
 
 }  // namespace tirefem
