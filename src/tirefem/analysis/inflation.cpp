@@ -50,6 +50,7 @@ void add_counters(SolveCounters& c, const NewtonSolver& newton, const NonlinearP
   c.used_lu = c.used_lu || l.used_lu;
   c.failed_cholesky += l.failed_cholesky;
   c.shifted_factorizations += l.shifted_factorizations;
+  c.symmetric_part_factorizations += l.symmetric_part_factorizations;
   c.krylov_solves += l.krylov_solves;
   c.krylov_failures += l.krylov_failures;
   c.krylov_iterations += l.krylov_iterations;

@@ -23,6 +23,7 @@ struct SolveCounters {
   bool used_lu = false;
   int failed_cholesky = 0;         // factorisations that found the tangent indefinite
   int shifted_factorizations = 0;  // Cholesky with an inertia shift
+  int symmetric_part_factorizations = 0;  // Cholesky of an unsymmetric tangent's symmetric part
   int krylov_solves = 0;      // Newton systems solved by GMRES on a reused factorisation
   int krylov_failures = 0;
   int krylov_iterations = 0;

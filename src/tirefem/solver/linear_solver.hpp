@@ -21,6 +21,7 @@ struct LinearSolverStats {
   int shifted_factorizations = 0;  // Cholesky of an indefinite matrix with a diagonal shift
   int failed_cholesky = 0;         // attempts that found the matrix not positive definite (counted in
                                    // factorizations too: they cost nearly as much)
+  int symmetric_part_factorizations = 0;  // Cholesky of ½(A + Aᵀ) for GMRES on an unsymmetric A
   int krylov_solves = 0;      // successful preconditioned GMRES solves (a factorisation reused)
   int krylov_failures = 0;    // GMRES solves given up (followed by a new factorisation)
   int krylov_iterations = 0;  // over all of them
@@ -42,6 +43,10 @@ class SparseDirectSolver {
   void factorize_lu(const SparseMatrix& matrix);
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
   bool has_factorization() const;
+  // GMRES iterations of the first preconditioned solve on the held factorisation (0 before any).
+  int first_krylov_iterations() const;
+  // The factorisation held is solve_by_symmetric_part's (of an unsymmetric matrix's symmetric part).
+  bool holds_symmetric_part() const;
   // True when every factorisation is an LU (an unsymmetric problem, or a sticky switch after indefinite ones).
   bool uses_lu() const;
   // The relative shift σ of the Cholesky factorisation solve() uses (0: of A itself); < 0 when solve()
@@ -66,9 +71,22 @@ class SparseDirectSolver {
   // preconditioned residual does not fall below `tolerance` × its initial value within max_iterations.
   bool solve_preconditioned(const SparseMatrix& matrix, const Eigen::VectorXd& rhs, Eigen::VectorXd& x,
                             double tolerance, int max_iterations);
+  // Unsymmetric A (a rolling tangent: friction makes it unsymmetric in the patch only): GMRES on A
+  // preconditioned by a new Cholesky factorisation of its symmetric part ½(A + Aᵀ), shifted by at most
+  // kMaxSymmetricPartShift if that is indefinite; it stays held for later preconditioned solves. Both the
+  // factorisation and its solves are cheaper than UMFPACK's: on the 80 × 46 full model (43 680 equations)
+  // 0.9 s and 35 ms against 1.8 s and 230 ms, and GMRES reaches 1e-8 in 9 iterations at α = 2°.
+  // False (x undefined) when the symmetric part needs a larger shift or GMRES does not converge within
+  // max_iterations: the caller's LU serves then. After n such failures in a row the next 2ⁿ − 1 calls
+  // return false at once (n ≤ kMaxSymmetricPartBackoff).
+  static constexpr int kMaxSymmetricPartBackoff = 4;
+  static constexpr double kMaxSymmetricPartShift = 1e-4;
+  bool solve_by_symmetric_part(const SparseMatrix& matrix, const Eigen::VectorXd& rhs, Eigen::VectorXd& x,
+                               double tolerance, int max_iterations);
   const LinearSolverStats& stats() const { return stats_; }
 
  private:
+  void update_symmetric_part(const SparseMatrix& matrix);
   void analyse_cholesky(const SparseMatrix& matrix);  // once: the pattern never changes
   struct Impl;
   std::unique_ptr<Impl> impl_;

@@ -13,6 +13,7 @@ namespace {
 // The exact step on an indefinite tangent by GMRES on the shifted factorisation: worth trying up to this
 // shift (the roll-up cantilever's 1e-5 needed ~20 iterations); beyond it LU is cheaper.
 constexpr int kMaxExactStepIterations = 25;
+constexpr double kExactStepTolerance = 1e-8;  // of a step by GMRES that stands for a direct solve
 constexpr double kMaxShiftForKrylov = 1e-4;
 // Nearest-equilibrium steps on a tangent that a relative shift this small makes positive definite (a
 // slightly indefinite or singular one, e.g. the roll-up cantilever past 0.8 of a turn) are found by
@@ -399,6 +400,12 @@ bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du,
   const auto direct = [&] {
     if (inertia_corrected_) return solve_inertia_corrected(rhs, du);
     shift_ = 0.0;
+    // An unsymmetric tangent: its symmetric part's Cholesky and GMRES, before an LU. The step is to be
+    // as exact as the LU's (an inexact one here, 1e-3, cost the rig's hardest states twice their Newton
+    // iterations), since this solve comes when a reused factorisation no longer serves.
+    if (settings_.reuse_factorization &&
+        linear_.solve_by_symmetric_part(tangent, rhs, du, kExactStepTolerance, settings_.max_krylov_iterations))
+      return true;
     linear_.factorize(tangent);
     du = linear_.solve(rhs);
     return du.allFinite();
@@ -411,8 +418,15 @@ bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du,
     }
     // Reuse the last factorisation as a preconditioner; refactorise when that no longer converges fast.
     const int before = linear_.stats().krylov_iterations;
-    if (linear_.solve_preconditioned(tangent, rhs, du, krylov_tolerance, settings_.max_krylov_iterations)) {
-      refresh_ = lu && linear_.stats().krylov_iterations - before > settings_.refresh_after_krylov_iterations;
+    // On the symmetric part's factorisation every step is solved as exactly as by an LU: its GMRES
+    // residual is not the true one (left preconditioning), and 1e-3 of it made the rig's hardest states
+    // take twice the Newton iterations or fail.
+    const double tolerance = linear_.holds_symmetric_part() ? kExactStepTolerance : krylov_tolerance;
+    if (linear_.solve_preconditioned(tangent, rhs, du, tolerance, settings_.max_krylov_iterations)) {
+      // (A factorisation of the symmetric part needs several iterations even on its own tangent: measured
+      // against those.)
+      refresh_ = lu && linear_.stats().krylov_iterations - before >
+                           std::max(settings_.refresh_after_krylov_iterations, 2 * linear_.first_krylov_iterations());
       // When a stable equilibrium is sought the step must descend (rhs = −R): an exact step towards a
       // saddle is replaced by the inertia-corrected one.
       const bool ascends = settings_.stable_equilibrium && problem_.has_potential() && du.dot(rhs) <= 0;
