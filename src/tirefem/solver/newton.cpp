@@ -403,7 +403,7 @@ bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du,
     // An unsymmetric tangent: its symmetric part's Cholesky and GMRES, before an LU. The step is to be
     // as exact as the LU's (an inexact one here, 1e-3, cost the rig's hardest states twice their Newton
     // iterations), since this solve comes when a reused factorisation no longer serves.
-    if (settings_.reuse_factorization &&
+    if (settings_.reuse_factorization && settings_.symmetric_part_preconditioner &&
         linear_.solve_by_symmetric_part(tangent, rhs, du, kExactStepTolerance, settings_.max_krylov_iterations))
       return true;
     linear_.factorize(tangent);
