@@ -1,8 +1,8 @@
 #include "tirefem/solver/linear_solver.hpp"
 
-#include <chrono>
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <mutex>
 #include <stdexcept>
 
