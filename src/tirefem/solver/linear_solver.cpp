@@ -47,8 +47,7 @@ struct SparseDirectSolver::Impl {
   int symmetric_part_skips = 0;       // calls left to go to the LU straight away
   int symmetric_part_successes = 0;   // in a row at symmetric_part_shift
   bool holds_symmetric_part = false;  // the Cholesky factorisation held is of the symmetric part
-  int solves_on_factorization = 0;    // preconditioned solves on the held factorisation
-  int first_krylov_iterations = 0;    // GMRES iterations of the first of them
+  int symmetric_part_iterations = 0;  // GMRES iterations of the solve that made its factorisation
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholesky;
   Eigen::UmfPackLU<SparseMatrix> lu;
 };
@@ -131,7 +130,6 @@ void SparseDirectSolver::factorize_lu(const SparseMatrix& matrix) {
   stats_.used_lu = true;
   s.lu_active = true;
   s.cholesky_shift = -1.0;
-  s.solves_on_factorization = s.first_krylov_iterations = 0;
   s.holds_symmetric_part = false;
   s.factorized = s.lu.info() == Eigen::Success;
   if (s.lu.info() != Eigen::Success) throw std::runtime_error("the tangent stiffness matrix is singular");
@@ -148,7 +146,9 @@ Eigen::VectorXd SparseDirectSolver::solve(const Eigen::VectorXd& rhs) {
 
 bool SparseDirectSolver::has_factorization() const { return impl_->factorized; }
 bool SparseDirectSolver::holds_symmetric_part() const { return impl_->holds_symmetric_part; }
-int SparseDirectSolver::first_krylov_iterations() const { return impl_->first_krylov_iterations; }
+int SparseDirectSolver::symmetric_part_iterations() const {
+  return impl_->holds_symmetric_part ? impl_->symmetric_part_iterations : 0;
+}
 bool SparseDirectSolver::uses_lu() const { return impl_->use_lu; }
 double SparseDirectSolver::held_cholesky_shift() const { return impl_->cholesky_shift; }
 
@@ -186,7 +186,6 @@ bool SparseDirectSolver::factorize_cholesky(const SparseMatrix& matrix, double r
     return false;
   }
   if (relative_shift > 0) ++stats_.shifted_factorizations;
-  s.solves_on_factorization = s.first_krylov_iterations = 0;
   s.holds_symmetric_part = false;
   s.factorized = true;
   s.lu_active = false;
@@ -298,7 +297,6 @@ bool SparseDirectSolver::solve_preconditioned(const SparseMatrix& matrix, const 
     ok = gmres_on_factorization<SparseMatrix>(matrix, this, rhs, x, tolerance, max_iterations, iterations);
   }
   stats_.krylov_iterations += iterations;
-  if (impl_->solves_on_factorization++ == 0) impl_->first_krylov_iterations = iterations;
   ++(ok ? stats_.krylov_solves : stats_.krylov_failures);
   stats_.krylov_s += seconds_since(t0);
   return ok;
@@ -336,7 +334,9 @@ bool SparseDirectSolver::solve_by_symmetric_part(const SparseMatrix& matrix, con
   s.symmetric_part_shift = s.cholesky_shift;
   s.holds_symmetric_part = true;
   ++stats_.symmetric_part_factorizations;
+  const int before = stats_.krylov_iterations;
   const bool ok = solve_preconditioned(matrix, rhs, x, tolerance, max_iterations);
+  s.symmetric_part_iterations = stats_.krylov_iterations - before;
   if (!ok) return failed();
   s.symmetric_part_failures = 0;
   return true;

@@ -43,10 +43,10 @@ class SparseDirectSolver {
   void factorize_lu(const SparseMatrix& matrix);
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
   bool has_factorization() const;
-  // GMRES iterations of the first preconditioned solve on the held factorisation (0 before any).
-  int first_krylov_iterations() const;
   // The factorisation held is solve_by_symmetric_part's (of an unsymmetric matrix's symmetric part).
   bool holds_symmetric_part() const;
+  // The GMRES iterations of the solve that made that factorisation (0 when another one is held).
+  int symmetric_part_iterations() const;
   // True when every factorisation is an LU (an unsymmetric problem, or a sticky switch after indefinite ones).
   bool uses_lu() const;
   // The relative shift σ of the Cholesky factorisation solve() uses (0: of A itself); < 0 when solve()

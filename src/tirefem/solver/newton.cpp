@@ -425,9 +425,9 @@ bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du,
     const double tolerance = linear_.holds_symmetric_part() ? kExactStepTolerance : krylov_tolerance;
     if (linear_.solve_preconditioned(tangent, rhs, du, tolerance, settings_.max_krylov_iterations)) {
       // (A factorisation of the symmetric part needs several iterations even on its own tangent: measured
-      // against those.)
+      // against those; an LU's threshold is unchanged.)
       refresh_ = lu && linear_.stats().krylov_iterations - before >
-                           std::max(settings_.refresh_after_krylov_iterations, 2 * linear_.first_krylov_iterations());
+                           std::max(settings_.refresh_after_krylov_iterations, 2 * linear_.symmetric_part_iterations());
       // When a stable equilibrium is sought the step must descend (rhs = −R): an exact step towards a
       // saddle is replaced by the inertia-corrected one.
       const bool ascends = settings_.stable_equilibrium && problem_.has_potential() && du.dot(rhs) <= 0;
