@@ -54,13 +54,14 @@ std::string best_kernel_for_this_cpu() {
 
 int blas_threads() {
   using Getter = int (*)();
-  const auto get = reinterpret_cast<Getter>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+  // Looked up once (the library does not change while the program runs): called around every solve.
+  static const auto get = reinterpret_cast<Getter>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
   return get ? get() : 0;
 }
 
 void set_blas_threads(int threads) {
   using Setter = void (*)(int);
-  const auto set = reinterpret_cast<Setter>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+  static const auto set = reinterpret_cast<Setter>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
   if (set && threads > 0) set(threads);
 }
 

@@ -31,4 +31,24 @@ int blas_threads();
 // Sets OpenBLAS's thread count (nothing for another BLAS).
 void set_blas_threads(int threads);
 
+// OpenBLAS on one thread while this lives, then as before. For the triangular solves of a sparse
+// factorisation: per supernode they call BLAS-2 kernels (a few hundred rows), which two threads only
+// slow down by waking each other (see SparseDirectSolver::solve). Only where no other thread changes the
+// count meanwhile: studies side by side run with one BLAS thread already (parallel_chains), and then this
+// changes nothing.
+class SingleBlasThread {
+ public:
+  SingleBlasThread() : previous_(blas_threads()) {
+    if (previous_ > 1) set_blas_threads(1);
+  }
+  ~SingleBlasThread() {
+    if (previous_ > 1) set_blas_threads(previous_);
+  }
+  SingleBlasThread(const SingleBlasThread&) = delete;
+  SingleBlasThread& operator=(const SingleBlasThread&) = delete;
+
+ private:
+  int previous_;
+};
+
 }  // namespace tirefem
