@@ -76,6 +76,14 @@ void SparseDirectSolver::analyse_cholesky(const SparseMatrix& matrix) {
   common.method[1].ordering = CHOLMOD_METIS;
   common.method[2].ordering = CHOLMOD_NESDIS;
   common.postorder = 1;
+  // Larger supernodes than CHOLMOD's default (nrelax 4/16/48: columns merged into a supernode when it has
+  // fewer than that many, given few enough explicit zeros): the dense BLAS kernels then work on bigger
+  // blocks. Measured on the tangent of the 120 × 46 half model (32 880 equations), standalone, best of 4:
+  // factorisation 0.28–0.34 → 0.22 s, factor 8.5 → 9.7 M entries, solve unchanged (8–9 ms); on the
+  // symmetric part of the 80 × 46 full model's rolling tangent (43 680): 0.47–0.49 → 0.39–0.44 s.
+  common.nrelax[0] = 8;
+  common.nrelax[1] = 64;
+  common.nrelax[2] = 256;
   {
     const std::lock_guard lock(ordering_mutex());
     s.cholesky.analyzePattern(matrix);
