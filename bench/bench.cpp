@@ -159,6 +159,8 @@ int main(int argc, char** argv) {
              blas.forced ? " (set by OPENBLAS_CORETYPE)" : " (detected)");
   const char* wait_policy = std::getenv("OMP_WAIT_POLICY");
   fmt::print("OpenMP wait policy: {}\n", wait_policy ? wait_policy : "libgomp's default (spinning)");
+  const char* thread_limit = std::getenv("OMP_THREAD_LIMIT");
+  fmt::print("OpenMP thread limit: {}\n", thread_limit ? thread_limit : "none");
   const char* thread_timeout = std::getenv("OPENBLAS_THREAD_TIMEOUT");
   fmt::print("OpenBLAS idle threads spin for 2^{} cycles\n", thread_timeout ? thread_timeout : "28 (its default)");
   // "rolling [CASE]" and "cornering [CASE]": the rolling benchmarks.

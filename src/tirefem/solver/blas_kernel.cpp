@@ -1,10 +1,12 @@
 #include "tirefem/solver/blas_kernel.hpp"
 
 #include <dlfcn.h>
+#include <sched.h>
 #include <unistd.h>
 
 #include <cctype>
 #include <cstdlib>
+#include <string>
 
 namespace tirefem {
 namespace {
@@ -26,6 +28,13 @@ bool generic_kernel(const std::string& core) {
   std::string lower;
   for (char c : core) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return lower == "prescott" || lower == "core2" || lower == "nehalem" || lower.empty();
+}
+
+// The processors this process may run on (its affinity mask), 0 if unknown.
+int usable_cores() {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  return sched_getaffinity(0, sizeof(set), &set) == 0 ? CPU_COUNT(&set) : 0;
 }
 
 }  // namespace
@@ -83,6 +92,18 @@ void use_fast_blas_kernel(char** argv) {
   if (!std::getenv("OPENBLAS_THREAD_TIMEOUT")) {
     setenv("OPENBLAS_THREAD_TIMEOUT", "4", 1);
     changed = true;
+  }
+  // CHOLMOD's supernodal factorisation runs small OpenMP loops (scattering each update into its
+  // supernode) on a team of 4 threads fixed when Debian built it, whatever the cores or OMP_NUM_THREADS:
+  // on 2 cores, with passive waiting, every supernode then wakes 3 sleeping threads. A limit of one
+  // OpenMP thread per core the process may use caps those teams (and two studies side by side, each
+  // factorising). Measured on the example (2 cores, one run each): 2.06 M → 0.68 M voluntary context
+  // switches, system time 24.0 → 18.6 s, user time 140 → 124 s, wall 84.9 → 73.5 s.
+  if (!std::getenv("OMP_THREAD_LIMIT")) {
+    if (const int cores = usable_cores(); cores > 0) {
+      setenv("OMP_THREAD_LIMIT", std::to_string(cores).c_str(), 1);
+      changed = true;
+    }
   }
   const BlasKernel k = blas_kernel();
   // The user's (or an earlier pass's) choice of kernel stands.

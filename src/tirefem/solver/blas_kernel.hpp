@@ -22,8 +22,10 @@ std::string best_kernel_for_this_cpu();
 
 // When OpenBLAS fell back to its generic kernel although the CPU supports a faster one, and the user has
 // not chosen one: sets OPENBLAS_CORETYPE. Unless the user has chosen one, sets OMP_WAIT_POLICY=passive
-// (OpenMP threads that spin take the cores from the BLAS threads). If either was set, re-executes the
-// program with the same arguments (does not return then); otherwise returns. Call first thing in main().
+// (OpenMP threads that spin take the cores from the BLAS threads), OPENBLAS_THREAD_TIMEOUT and
+// OMP_THREAD_LIMIT (one OpenMP thread per usable core; see the definition). If any was set, re-executes
+// the program with the same arguments (does not return then); otherwise returns. Call first thing in
+// main().
 void use_fast_blas_kernel(char** argv);
 
 // OpenBLAS's thread count (0 for another BLAS, whose threads are not ours to set).
