@@ -97,8 +97,9 @@ void use_fast_blas_kernel(char** argv) {
   // supernode) on a team of 4 threads fixed when Debian built it, whatever the cores or OMP_NUM_THREADS:
   // on 2 cores, with passive waiting, every supernode then wakes 3 sleeping threads. A limit of one
   // OpenMP thread per core the process may use caps those teams (and two studies side by side, each
-  // factorising). Measured on the example (2 cores, one run each): 2.06 M → 0.68 M voluntary context
-  // switches, system time 24.0 → 18.6 s, user time 140 → 124 s, wall 84.9 → 73.5 s.
+  // factorising). Measured on 2 cores: the load-curve bench 24.1 → 20.5 s wall, system time 7.3 → 4.5 s
+  // (3 paired runs, medians); the example 2.06 M → 0.68 M voluntary context switches in one run each,
+  // and 88.5 → 80.9 s wall in 2 paired runs (medians; its runs differ by more than that).
   if (!std::getenv("OMP_THREAD_LIMIT")) {
     if (const int cores = usable_cores(); cores > 0) {
       setenv("OMP_THREAD_LIMIT", std::to_string(cores).c_str(), 1);
