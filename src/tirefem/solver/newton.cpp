@@ -420,7 +420,7 @@ bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du,
     // The usual inexact-Newton tolerance on a held factorisation of the symmetric part too (the fresh one
     // in direct() solves its own step exactly). Measured on the half model's rolling bench (80 × 46, two
     // runs each): κ = 0.02 state 2.0–2.4 → 1.5–1.6 s, 15-point κ sweep 15.2–15.7 → 13.5–14.2 s,
-    // 17 → 13 factorisations, the same Newton iterations (66 → 68). The full model (cornering, the rig)
+    // 17 → 13 factorisations, Newton iterations 66 → 68. The full model (cornering, the rig)
     // does not use the symmetric part: docs/studies/rolling-symmetric-part-preconditioner.md.
     if (linear_.solve_preconditioned(tangent, rhs, du, krylov_tolerance, settings_.max_krylov_iterations)) {
       // (A factorisation of the symmetric part needs several iterations even on its own tangent: measured
