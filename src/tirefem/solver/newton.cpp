@@ -58,6 +58,7 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
   // converging to an unstable equilibrium.
   bool saddle_ahead = false;
   double last_step_shift = 0.0;  // of the factorisation behind the last step that needed one
+  bool step_factorised = false;  // the last step came with a factorisation made for it
   // The first shift the converged state's stability test tries: with a saddle ahead, one decade below
   // the shift a tangent of this solve last needed, since the converged state's is alike (measured on the
   // example's load curve: the scan from 0 took 6 factorisations at 30 mm, for the 1e-2 found two
@@ -208,9 +209,12 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
     // coarse example mesh's inflated saddle: to 1e2 relative); max_iterations bounds it.
     if (it >= 3 && rn > 1e4 * first_residual && !(settings_.stable_equilibrium && potential)) return out;
     Eigen::VectorXd du;
+    const int factorizations_before = linear_.stats().factorizations;
     // A step from a reused factorisation that made the residual grow was too inexact for this
-    // nonlinearity (e.g. the preconditioner came from a very different state): factorise afresh.
-    const bool fresh = it > 0 && rn > previous_residual;
+    // nonlinearity (e.g. the preconditioner came from a very different state): factorise afresh. Not after
+    // a step from a factorisation of its own iterate: that step was as exact as a new one would be, the
+    // growth is the nonlinearity's, and GMRES on that recent factorisation serves the next step.
+    const bool fresh = it > 0 && rn > previous_residual && !step_factorised;
     double eta = settings_.krylov_tolerance;
     if (settings_.adaptive_krylov_tolerance) {
       // Eisenstat–Walker forcing term (their choice 2, γ = 0.9, α = 2): loose while the residual falls
@@ -242,6 +246,7 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
       // factorisation, whose scan need not try σ = 0 again.
       if (!solve_inertia_corrected(-r, du, SparseDirectSolver::kFirstShift)) return out;
     } else if (!solve_linear(-r, du, fresh, eta)) return out;
+    step_factorised = linear_.stats().factorizations > factorizations_before;
     if (shift_ > 0 || lu_mode_) near_stable = false;  // a later tangent was indefinite: test the end state
     if (shift_ > 0) last_step_shift = shift_;
     out.final_shift = shift_;
