@@ -35,7 +35,8 @@ TEST(AssemblyDeterminism, SameBitsOnOneTwoAndThreeThreads) {
   const Assembled one = assemble_with_threads(problem, u, 1);
   ASSERT_GT(one.residual.norm(), 0.0);
   // The test programs run with the program's OpenMP thread limit (one per usable core, test_main.cpp):
-  // thread counts beyond it are not tried, since the program never runs them there. 2 always is.
+  // thread counts beyond it are not tried, since the program never runs them there (on 2 cores: 1 against
+  // 2 only; on 1 core nothing to compare).
   if (omp_get_thread_limit() < 2) GTEST_SKIP() << "one OpenMP thread on this machine: nothing to compare";
   for (int threads : {2, 3}) {
     if (threads > omp_get_thread_limit()) {
