@@ -17,6 +17,7 @@
 #include "tirefem/case/case_reader.hpp"
 #include "tirefem/io/results_folder.hpp"
 #include "tirefem/solver/blas_kernel.hpp"
+#include "tirefem/solver/heap_settings.hpp"
 
 namespace {
 
@@ -52,6 +53,7 @@ std::string case_file_problem(const std::string& file) {
 
 int main(int argc, char** argv) {
   tirefem::use_fast_blas_kernel(argv);
+  tirefem::keep_freed_memory();
   CLI::App app{"tirefem: finite-element contact of a car tyre with a road or a test drum"};
   app.require_subcommand(1);
   std::string case_file, out_dir = "results";

@@ -20,6 +20,7 @@
 #include "tirefem/case/case_reader.hpp"
 #include "tirefem/results/shell_results.hpp"
 #include "tirefem/solver/blas_kernel.hpp"
+#include "tirefem/solver/heap_settings.hpp"
 
 namespace {
 
@@ -154,6 +155,7 @@ int cornering_benchmark(const std::string& file) {
 int main(int argc, char** argv) {
   using namespace tirefem;
   use_fast_blas_kernel(argv);
+  const std::string allocator = keep_freed_memory();
   const BlasKernel blas = blas_kernel();
   fmt::print("BLAS: {}, kernel {}{}\n", blas.library, blas.core.empty() ? "unknown" : blas.core,
              blas.forced ? " (set by OPENBLAS_CORETYPE)" : " (detected)");
@@ -163,6 +165,7 @@ int main(int argc, char** argv) {
   fmt::print("OpenMP thread limit: {}\n", thread_limit ? thread_limit : "none");
   const char* thread_timeout = std::getenv("OPENBLAS_THREAD_TIMEOUT");
   fmt::print("OpenBLAS idle threads spin for 2^{} cycles\n", thread_timeout ? thread_timeout : "28 (its default)");
+  fmt::print("memory allocator: {}\n", allocator);
   // "rolling [CASE]" and "cornering [CASE]": the rolling benchmarks.
   for (const auto& [mode, benchmark] : {std::pair{"rolling", &rolling_benchmark}, std::pair{"cornering", &cornering_benchmark}}) {
     if (argc < 2 || std::string(argv[1]) != mode) continue;
