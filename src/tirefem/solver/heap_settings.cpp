@@ -14,8 +14,9 @@ namespace {
 // above its trim threshold. Every Newton step allocates blocks of that size (e.g. GMRES's Krylov basis,
 // n × 26 doubles; each LU's numeric object), so every step faulted its pages in again, and a page fault
 // is expensive on a virtual machine. Measured on the whole example (2 cores, studies side by side on two
-// worker threads), one run each: 1.9 M → 0.32 M page faults, system time 17.8 → 6.7 s, wall 74.3 →
-// 58.2 s, peak memory 629 → 683 MB (README, "Speed").
+// worker threads), 3 paired runs against glibc's defaults, medians: wall 70.6 → 57.7 s, system time
+// 16.2 → 6.5 s, peak memory 611 → 652 MiB; page faults 1.9 M → 0.32 M in one run each (README, solver
+// notes, "The allocator keeps freed memory").
 constexpr int kKeptBlockBytes = 512 << 20;
 constexpr int kKeptFreeBytes = 1 << 30;
 bool tuned_by_user() { return std::getenv("GLIBC_TUNABLES") != nullptr; }
