@@ -5,10 +5,10 @@
 
 namespace tirefem {
 
-// Unless the user tunes the allocator (GLIBC_TUNABLES): blocks up to kKeptBlockBytes come from the heap
-// rather than from fresh mappings, and freed memory is not handed back to the system below
-// kKeptFreeBytes, so a block freed by one step is reused by the next without the system clearing its
-// pages again. Call first thing in main(), before threads start. Nothing on other C libraries. Returns
+// Unless the user tunes the allocator (GLIBC_TUNABLES): blocks up to 512 MiB come from the heap rather
+// than from fresh mappings, and up to 1 GiB of freed memory is kept rather than handed back to the
+// system, so a block freed by one step is reused by the next without the system clearing its pages
+// again. Call first thing in main(), before threads start. Nothing on other C libraries. Returns
 // what it did, in a few words (the bench prints it).
 std::string keep_freed_memory();
 
