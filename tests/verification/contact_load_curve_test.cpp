@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "contact_support.hpp"
+#include "tirefem/analysis/shared_states.hpp"
 
 namespace tirefem::verification {
 namespace {
@@ -184,6 +185,58 @@ TEST(ContactLoadCurve, FootprintFromALoadCurveFindsTheSameState) {
   EXPECT_NEAR(qb, study.target_load, tolerance);
   EXPECT_NEAR(da, db, 2.0 * tolerance / stiffness);
   EXPECT_LT(seeded.counters.newton_iterations, scratch.counters.newton_iterations);
+}
+
+// The same from a load curve on another mesh of the same meridional stations (the CLI's rolling studies
+// on their own mesh after the case's load curve): the footprint searched from the curve's two states
+// around the target, interpolated onto this mesh, equals the search from the unloaded tyre within the load
+// tolerance, in fewer Newton iterations. Where that start is too far from this mesh's state for Newton,
+// the search starts again from the unloaded tyre and finds the same state.
+TEST(ContactLoadCurve, FootprintFromAnotherMeshsLoadCurveFindsTheSameState) {
+  const Case& c = example_case();
+  const ContactSettings settings = test_contact_settings(ContactSettings::Iteration::single_loop);
+  FootprintStudy study;
+  study.name = "footprint";
+  study.support = plane_support();
+  study.target_load = 1500.0;
+  const double tolerance = study.load_tolerance * study.target_load;
+  const auto check = [&](int curve_elements, int elements, bool fewer_iterations) {
+    const TyreMesh curve_mesh = build_tyre_mesh(c.tyre, coarse_mesh(curve_elements, 8));
+    const TyreMesh tm = build_tyre_mesh(c.tyre, coarse_mesh(elements, 8));
+    const InflationResult curve_inflated = inflate_for_contact(curve_mesh, c.inflation);
+    const InflationResult inflated = inflate_for_contact(tm, c.inflation);
+    ASSERT_TRUE(curve_inflated.converged && inflated.converged);
+    const StaticContactResult curve = run_load_curve(curve_mesh, c.tyre, c.inflation, settings,
+                                                     load_curve("plane", plane_support(), 20.0, 5), {},
+                                                     &curve_inflated, /*keep_path=*/true);
+    ASSERT_TRUE(curve.completed) << curve.failure;
+    const std::vector<PathState> near = load_curve_states_near(curve, curve_mesh, tm, study.target_load);
+    ASSERT_EQ(near.size(), 2u);
+    EXPECT_LT(near.front().Qz_N, study.target_load);
+    EXPECT_GE(near.back().Qz_N, study.target_load);
+    EXPECT_TRUE(load_curve_states_near(curve, curve_mesh, tm, 1e6).empty()) << "a load the curve does not reach";
+    const StaticContactResult scratch = run_footprint(tm, c.tyre, c.inflation, settings, study, {}, &inflated);
+    const StaticContactResult seeded =
+        run_footprint(tm, c.tyre, c.inflation, settings, study, {}, &inflated, nullptr, &near);
+    ASSERT_TRUE(scratch.completed) << scratch.failure;
+    ASSERT_TRUE(seeded.completed) << seeded.failure;
+    const double qa = scratch.points.back().patch.Qz_N, qb = seeded.points.back().patch.Qz_N;
+    const double da = scratch.final_state.deflection_mm, db = seeded.final_state.deflection_mm;
+    const std::size_t last = scratch.points.size() - 1;
+    const double stiffness = (scratch.points[last].patch.Qz_N - scratch.points[last - 1].patch.Qz_N) /
+                             (scratch.points[last].deflection_mm - scratch.points[last - 1].deflection_mm);
+    std::printf("  %d x 8 from the unloaded tyre: Qz %.3f N at δz %.5f mm, %d Newton iterations; from the %d x 8 "
+                "curve: %.3f N at %.5f mm, %d Newton iterations; dQz/dδz %.1f N/mm\n",
+                elements, qa, da, scratch.counters.newton_iterations, curve_elements, qb, db,
+                seeded.counters.newton_iterations, stiffness);
+    ASSERT_GT(stiffness, 0.0);
+    EXPECT_NEAR(qa, study.target_load, tolerance);
+    EXPECT_NEAR(qb, study.target_load, tolerance);
+    EXPECT_NEAR(da, db, 2.0 * tolerance / stiffness);
+    if (fewer_iterations) EXPECT_LT(seeded.counters.newton_iterations, scratch.counters.newton_iterations);
+  };
+  check(48, 36, true);   // the example's 120 onto 80 in proportion
+  check(36, 24, false);  // 74 mm elements round the patch: Newton fails from the other mesh's states
 }
 
 }  // namespace

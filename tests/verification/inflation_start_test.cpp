@@ -1,5 +1,6 @@
 // The inflated state of one mesh as the start of another's (analysis/inflation.hpp run_inflation_from):
-// the same state as the pressure ramp on that mesh, in fewer Newton iterations.
+// the same state as the pressure ramp on that mesh, in fewer Newton iterations; and the interpolation of a
+// state round the axis (analysis/mesh_transfer.hpp).
 #include <cstdio>
 
 #include <gtest/gtest.h>
@@ -76,6 +77,30 @@ TEST(InflationStart, OnlyBetweenMeshesWithTheSameMeridionalStations) {
   ASSERT_TRUE(r.converged);
   const Eigen::VectorXd same = turned_onto(uniform, r.displacement, uniform);
   EXPECT_LE((same - r.displacement).cwiseAbs().maxCoeff(), 1e-8 * r.displacement.cwiseAbs().maxCoeff());
+}
+
+// interpolated_onto (a deformed state onto another mesh of the same kind and meridional stations): onto
+// its own mesh it is the state itself; a state that turns with the tyre (the inflated one on equal
+// elements) it carries exactly, as turned_onto does; a half model's state onto a full model it refuses.
+TEST(InflationStart, InterpolationRoundTheAxisKeepsWhatItShould) {
+  const Case& c = example_case();
+  const TyreMesh from = build_tyre_mesh(c.tyre, coarse_mesh(24, 8, true, 1.0));
+  const TyreMesh to = build_tyre_mesh(c.tyre, coarse_mesh(36, 8, true, 1.0));
+  const TyreMesh full = build_tyre_mesh(c.tyre, coarse_mesh(36, 8, false, 1.0));
+  const InflationResult r = run_inflation(from, c.inflation);
+  ASSERT_TRUE(r.converged);
+  const double scale = r.displacement.cwiseAbs().maxCoeff();
+  const Eigen::VectorXd same = interpolated_onto(from, r.displacement, from);
+  EXPECT_LE((same - r.displacement).cwiseAbs().maxCoeff(), 1e-12 * scale);
+  const Eigen::VectorXd interpolated = interpolated_onto(from, r.displacement, to);
+  const Eigen::VectorXd turned = turned_onto(from, r.displacement, to);
+  const double difference = (interpolated - turned).cwiseAbs().maxCoeff();
+  std::printf("  24 x 8 inflated onto 36 x 8: interpolated and turned differ by %.1e mm of %.3f mm\n", difference,
+              scale);
+  EXPECT_LE(difference, 1e-8 * scale);  // the state's own departure from axisymmetry (see above)
+  EXPECT_TRUE(interpolates_onto(from, to));
+  EXPECT_FALSE(interpolates_onto(from, full));
+  EXPECT_THROW(interpolated_onto(from, r.displacement, full), std::invalid_argument);
 }
 
 }  // namespace

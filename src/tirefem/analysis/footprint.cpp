@@ -341,7 +341,7 @@ bool solve_at_given_deflection(StaticContactRun& run, double deflection, double 
 // a membrane estimate of the deflection (first_touch.hpp), within [0.5, max_step] mm of the first point.
 bool search_target_load(StaticContactRun& run, StaticContactResult& result, const FootprintStudy& study,
                         double pressure, double section_height, double max_step, const ProgressSink& progress,
-                        const StaticContactResult* along) {
+                        const StaticContactResult* along, const std::vector<PathState>* nearby) {
   const double target = study.target_load, tolerance = study.load_tolerance * study.target_load;
   const double q0 = run.last_Qz();
   if (std::abs(q0 - target) <= tolerance) return true;
@@ -368,6 +368,19 @@ bool search_target_load(StaticContactRun& run, StaticContactResult& result, cons
       progress(fmt::format("  from load curve '{}': Qz {:.1f} N at δz {:.2f} mm, {:.1f} N at {:.2f} mm; first "
                            "step to δz = {:.2f} mm",
                            along->name, q_lo, lo, q_hi, hi, next));
+  } else if (nearby && nearby->size() >= 2 && q0 < target) {
+    // States of another mesh carried onto this one (their Qz that mesh's): the prediction from them, and
+    // the first step to where their Qz meets the target; the bracket from this mesh's own solves.
+    run.add_known_states(*nearby);
+    const PathState& a = nearby->front();
+    const PathState& b = nearby->back();
+    next = b.Qz_N != a.Qz_N ? a.deflection_mm + (target - a.Qz_N) * (b.deflection_mm - a.deflection_mm) / (b.Qz_N - a.Qz_N)
+                            : b.deflection_mm;
+    next = std::max(next, run.start() + 0.5);
+    if (progress)
+      progress(fmt::format("  from another mesh's load curve: Qz {:.1f} N at δz {:.2f} mm, {:.1f} N at {:.2f} mm "
+                           "there; first step to δz = {:.2f} mm",
+                           a.Qz_N, a.deflection_mm, b.Qz_N, b.deflection_mm, next));
   } else if (q0 > target) {
     // Passed already at δz = 0 (from the undeformed tyre): between the first touch (Qz = 0) and here.
     lo = result.first_touch_deflection_mm, q_lo = 0.0, hi = run.start(), q_hi = q0, bracketed = true;
@@ -432,7 +445,8 @@ bool search_target_load(StaticContactRun& run, StaticContactResult& result, cons
 StaticContactResult run_footprint(const TyreMesh& tm, const TyreDescription& tyre,
                                   const InflationSettings& inflation, const ContactSettings& contact,
                                   const FootprintStudy& study, const ProgressSink& progress,
-                                  const InflationResult* inflated, const StaticContactResult* along) {
+                                  const InflationResult* inflated, const StaticContactResult* along,
+                                  const std::vector<PathState>* nearby) {
   const auto t0 = Clock::now();
   StaticContactResult result = empty_result(tm, contact, study);
   if (study.deflection)
@@ -463,11 +477,21 @@ StaticContactResult run_footprint(const TyreMesh& tm, const TyreDescription& tyr
     // From the undeformed tyre the first point is at 0, from the first touch at the first touch.
     ok = solve_at_given_deflection(run, run.start() + *study.deflection, kMaxStep);
   } else {
-    ok = search_target_load(run, result, study, inflation.pressure, section_height, kMaxStep, progress, along);
+    ok = search_target_load(run, result, study, inflation.pressure, section_height, kMaxStep, progress, along, nearby);
   }
   run.finish();
   result.completed = ok;
   result.counters.wall_s = seconds_since(t0);
+  if (!ok && nearby) {
+    // Another mesh's states may be too far from this mesh's solution to start Newton (a much coarser or
+    // finer mesh round the patch): the search from the unloaded tyre, its work counted with this attempt's.
+    if (progress)
+      progress(fmt::format("  from another mesh's load curve: {}; searching again from the unloaded tyre",
+                           result.failure));
+    StaticContactResult again = run_footprint(tm, tyre, inflation, contact, study, progress, inflated, along);
+    add_counters(again.counters, result.counters);
+    return again;
+  }
   return result;
 }
 

@@ -103,12 +103,16 @@ StaticContactResult run_load_curve(const TyreMesh& tyre_mesh, const TyreDescript
 // study's given deflection, from `inflated` as above. `along`: a load curve of this mesh on the same
 // support, in the same theory and from the same origin, with its path kept: the search starts from its
 // states (the bracket of the target from their Qz, the prediction from the nearest two), instead of
-// stepping there from the unloaded tyre.
+// stepping there from the unloaded tyre. `nearby` (without `along`): two states of another mesh's such load
+// curve on either side of the target load, carried onto this mesh (interpolated_onto): the search's first
+// step goes to where their Qz meets the target, predicted from them; its bracket comes from this mesh's own
+// solves (the other mesh's Qz differs by its discretisation).
 StaticContactResult run_footprint(const TyreMesh& tyre_mesh, const TyreDescription& tyre,
                                   const InflationSettings& inflation, const ContactSettings& contact,
                                   const FootprintStudy& study, const ProgressSink& progress = {},
                                   const InflationResult* inflated = nullptr,
-                                  const StaticContactResult* along = nullptr);
+                                  const StaticContactResult* along = nullptr,
+                                  const std::vector<PathState>* nearby = nullptr);
 
 // The nonlinear inflated state the contact studies start from (both theories: the linear one is
 // linearised about it).

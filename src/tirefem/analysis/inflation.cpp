@@ -40,6 +40,28 @@ NewtonSettings inflation_newton_settings(const InflationSettings& settings) {
 
 }  // namespace
 
+void add_counters(SolveCounters& to, const SolveCounters& from) {
+  to.load_steps += from.load_steps;
+  to.cutbacks += from.cutbacks;
+  to.newton_iterations += from.newton_iterations;
+  to.factorizations += from.factorizations;
+  to.assemblies += from.assemblies;
+  to.assembly_s += from.assembly_s;
+  to.analysis_s += from.analysis_s;
+  to.factorization_s += from.factorization_s;
+  to.solve_s += from.solve_s;
+  to.wall_s += from.wall_s;
+  to.used_lu = to.used_lu || from.used_lu;
+  to.failed_cholesky += from.failed_cholesky;
+  to.shifted_factorizations += from.shifted_factorizations;
+  to.symmetric_part_factorizations += from.symmetric_part_factorizations;
+  to.krylov_solves += from.krylov_solves;
+  to.krylov_failures += from.krylov_failures;
+  to.krylov_iterations += from.krylov_iterations;
+  to.krylov_s += from.krylov_s;
+  to.solves += from.solves;
+}
+
 void add_counters(SolveCounters& c, const NewtonSolver& newton, const NonlinearProblem& problem) {
   const LinearSolverStats& l = newton.linear_stats();
   c.newton_iterations += newton.total_iterations();
@@ -99,54 +121,6 @@ InflationResult run_inflation(const TyreMesh& tm, const InflationSettings& setti
   c.cutbacks = path.cutbacks;
   c.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;
-}
-
-namespace {
-// For each node column of `to`, the column of `from` at the same meridional station (on a full `to` from a
-// half `from`: at |s|, the mirror image for s < 0); empty when there is none for some column.
-std::vector<int> matching_columns(const TyreMesh& from, const TyreMesh& to) {
-  const bool mirror = from.half_model && !to.half_model;
-  if (from.half_model != to.half_model && !mirror) return {};
-  std::vector<int> columns;
-  const std::vector<double>& f = from.mesh.u_values;
-  for (double s : to.mesh.u_values) {
-    const double station = mirror ? std::abs(s) : s;
-    const auto it = std::find_if(f.begin(), f.end(), [&](double g) { return std::abs(g - station) <= 1e-9 * (1 + std::abs(g)); });
-    if (it == f.end()) return {};
-    columns.push_back(static_cast<int>(it - f.begin()));
-  }
-  // Every station of `from` is used (no coarser `to` taking a subset): the meshes have the same stations.
-  std::vector<char> used(f.size(), 0);
-  for (int c : columns) used[c] = 1;
-  if (std::find(used.begin(), used.end(), 0) != used.end()) return {};
-  return columns;
-}
-}  // namespace
-
-bool turns_onto(const TyreMesh& from, const TyreMesh& to) { return !matching_columns(from, to).empty(); }
-
-Eigen::VectorXd turned_onto(const TyreMesh& from, const Eigen::VectorXd& displacement, const TyreMesh& to) {
-  const std::vector<int> columns = matching_columns(from, to);
-  if (columns.empty()) throw std::invalid_argument("turned_onto: the meshes' meridional stations differ");
-  // φ of a point (x, r sin φ, axis_z − r cos φ) (mesh/revolution_mesh.hpp); a rotation by Δ about x
-  // takes φ to φ + Δ, and so the displacement of a node row onto a row Δ further round. A column at s < 0
-  // of a full mesh from a half one: the mirror image in the wheel plane (x → −x), then the turn.
-  // A full model from its half on the same circumferential stations: each row takes its own (no turn),
-  // exact where the state is not quite axisymmetric (elements refined towards the patch).
-  const bool mirror = from.half_model && !to.half_model;
-  const bool same_rows = mirror && from.mesh.v_values == to.mesh.v_values;
-  const auto angle = [](const Eigen::Vector3d& p, double axis_z) { return std::atan2(p.y(), axis_z - p.z()); };
-  Eigen::VectorXd u = Eigen::VectorXd::Zero(to.mesh.dof_count());
-  for (int j = 0; j < to.mesh.v_nodes(); ++j)
-    for (int i = 0; i < to.mesh.u_nodes(); ++i) {
-      const int p = to.mesh.pair_index(i, j), q = from.mesh.pair_index(columns[i], same_rows ? j : 0);
-      const double turn = angle(to.mesh.inner_nodes[p], to.axis_z) - angle(from.mesh.inner_nodes[q], from.axis_z);
-      Eigen::Matrix3d r = Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitX()).toRotationMatrix();
-      if (mirror && to.mesh.u_values[i] < 0) r.col(0) *= -1.0;
-      u.segment<3>(6 * p) = r * displacement.segment<3>(6 * q);
-      u.segment<3>(6 * p + 3) = r * displacement.segment<3>(6 * q + 3);
-    }
-  return u;
 }
 
 InflationResult run_inflation_from(const TyreMesh& tm, const InflationSettings& settings, const TyreMesh& from,

@@ -4,6 +4,7 @@
 
 #include "tirefem/case/case.hpp"
 #include "tirefem/element/element_geometry.hpp"
+#include "tirefem/analysis/mesh_transfer.hpp"
 #include "tirefem/solver/newton.hpp"
 #include "tirefem/tyre/tyre_mesh.hpp"
 
@@ -35,6 +36,8 @@ struct SolveCounters {
 
 // Adds the work of a Newton solver and its problem (iterations, factorisations, times) to c.
 void add_counters(SolveCounters& c, const NewtonSolver& newton, const NonlinearProblem& problem);
+// Adds the work counted in `from` (e.g. a failed attempt before the one counted in `to`).
+void add_counters(SolveCounters& to, const SolveCounters& from);
 
 struct InflationResult {
   bool converged = false;
@@ -56,12 +59,5 @@ InflationResult run_inflation(const TyreMesh& tyre_mesh, const InflationSettings
 InflationResult run_inflation_from(const TyreMesh& tyre_mesh, const InflationSettings& settings,
                                    const TyreMesh& from, const Eigen::VectorXd& inflated_from,
                                    const ProgressSink& progress = {});
-// The displacement of `from`'s first node row turned onto every node row of `to` (meshes of one tyre with
-// the same meridional stations; throws otherwise): an axisymmetric state carried to another mesh. A half
-// model's state goes onto the full model of its stations as itself and its mirror image (a state symmetric
-// about the wheel plane, as the inflated one is).
-Eigen::VectorXd turned_onto(const TyreMesh& from, const Eigen::VectorXd& displacement, const TyreMesh& to);
-// Whether turned_onto carries a state of `from` onto `to`.
-bool turns_onto(const TyreMesh& from, const TyreMesh& to);
 
 }  // namespace tirefem

@@ -255,7 +255,7 @@ std::vector<double> sweep_values(double from, double to, int points, SweepSpacin
 RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const InflationSettings& inflation,
                           const ContactSettings& contact, const RollingStudy& study, const ProgressSink& progress,
                           const InflationResult* inflated, const StaticContactResult* footprint,
-                          const std::function<void()>& point_done) {
+                          const std::function<void()>& point_done, const std::vector<PathState>* nearby) {
   RollingResult r;
   r.name = study.name;
   r.support = study.support;
@@ -278,7 +278,7 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
     fs.support = study.support;
     fs.target_load = study.target_load;
     fs.load_tolerance = study.load_tolerance;
-    r.footprint = run_footprint(tm, tyre, inflation, contact, fs, progress, inflated);
+    r.footprint = run_footprint(tm, tyre, inflation, contact, fs, progress, inflated, nullptr, nearby);
   }
   if (!r.footprint.completed) {
     r.failure = "static footprint: " + r.footprint.failure;

@@ -143,13 +143,15 @@ struct RollingResult {
 
 // From `inflated` when given (see run_footprint), else from its own inflation. `footprint`, when given, is
 // the completed static footprint of this mesh on the study's support at its target load (shared by the
-// studies at that load); else the study solves its own. `point_done` is called once per state and sweep
-// point as it is finished (solved, failed or skipped), e.g. to estimate the time left.
+// studies at that load); else the study solves its own (from `nearby`, when given: see run_footprint).
+// `point_done` is called once per state and sweep point as it is finished (solved, failed or skipped), e.g.
+// to estimate the time left.
 RollingResult run_rolling(const TyreMesh& tyre_mesh, const TyreDescription& tyre, const InflationSettings& inflation,
                           const ContactSettings& contact, const RollingStudy& study, const ProgressSink& progress = {},
                           const InflationResult* inflated = nullptr,
                           const StaticContactResult* footprint = nullptr,
-                          const std::function<void()>& point_done = {});
+                          const std::function<void()>& point_done = {},
+                          const std::vector<PathState>* nearby = nullptr);
 
 // The `points` values of a sweep over [from, to] (SweepSpacing): evenly spaced, or each side of zero
 // quadratically denser towards it (v = end·(t/end)² for t evenly spaced; from < 0 < to keeps 0 if even).

@@ -318,18 +318,34 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
   for (const RollingStudy& s : c.rolling) {
     const MeshSettings settings = s.mesh.value_or(c.mesh);  // a copy: the task runs after this loop
     const std::string key = SharedFootprints::key(settings, s.support, s.target_load, s.load_tolerance);
-    auto solve = task(k, "rolling '" + s.name + "'", [&, k, key, settings](const ProgressSink& sink) {
+    const auto it = chain_of_footprint.find(key);
+    // A footprint of its own: from a load curve of the case's mesh on its support (nonlinear, δz from the
+    // undeformed tyre), carried onto its mesh, when the meshes allow it; it then runs after that curve.
+    const auto curve = it != chain_of_footprint.end()
+                           ? curve_of_problem.end()
+                           : curve_of_problem.find(problem_key(s.support, false, DeflectionOrigin::undeformed));
+    const int along =
+        curve != curve_of_problem.end() && interpolates_onto(tyres.mesh(c.mesh), tyres.mesh(settings))
+            ? curve->second.second
+            : -1;
+    auto solve = task(k, "rolling '" + s.name + "'", [&, k, key, settings, along](const ProgressSink& sink) {
       const TyreMesh& mesh = tyres.mesh(settings);
       if (s.mesh)
         sink(fmt::format("rolling '{}' on its own mesh: {} x {}, {} elements", s.name, settings.circumferential_elements,
                          settings.meridional_elements, mesh.mesh.element_count()));
+      std::vector<PathState> nearby;
+      if (along >= 0 && runs[along].contact)
+        nearby = load_curve_states_near(*runs[along].contact, tyres.mesh(c.mesh), mesh, s.target_load);
       runs[k].rolling = run_rolling(mesh, c.tyre, c.inflation, c.contact, s, sink, &tyres.inflated(settings),
-                                    footprints.find(key));
+                                    footprints.find(key), {}, nearby.empty() ? nullptr : &nearby);
       footprints.keep(key, runs[k].rolling->footprint);
     });
-    const auto it = chain_of_footprint.find(key);
     if (it != chain_of_footprint.end()) {
       chains[it->second].push_back(std::move(solve));
+    } else if (along >= 0) {
+      keep_path[along] = 1;
+      chains[curve->second.first].push_back(std::move(solve));
+      chain_of_footprint.emplace(key, curve->second.first);
     } else {
       chains.push_back({std::move(solve)});
       chain_of_footprint.emplace(key, chains.size() - 1);

@@ -1,5 +1,7 @@
 #include "tirefem/analysis/shared_states.hpp"
 
+#include "tirefem/analysis/mesh_transfer.hpp"
+
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -86,6 +88,22 @@ const StaticContactResult* SharedFootprints::find(const std::string& key) const 
 void SharedFootprints::keep(const std::string& key, const StaticContactResult& r) {
   const std::lock_guard lock(mutex_);
   if (r.completed) entries_.try_emplace(key, r);
+}
+
+std::vector<PathState> load_curve_states_near(const StaticContactResult& curve, const TyreMesh& curve_mesh,
+                                              const TyreMesh& mesh, double load) {
+  if (!interpolates_onto(curve_mesh, mesh)) return {};
+  const PathState* below = nullptr;
+  const PathState* above = nullptr;
+  for (const PathState& p : curve.path) {
+    if (p.Qz_N < load && (!below || p.deflection_mm > below->deflection_mm)) below = &p;
+    if (p.Qz_N >= load && (!above || p.deflection_mm < above->deflection_mm)) above = &p;
+  }
+  if (!below || !above || above->deflection_mm <= below->deflection_mm) return {};
+  std::vector<PathState> near;
+  for (const PathState* p : {below, above})
+    near.push_back({p->deflection_mm, p->Qz_N, interpolated_onto(curve_mesh, p->displacement, mesh)});
+  return near;
 }
 
 }  // namespace tirefem

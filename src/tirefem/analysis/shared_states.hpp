@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include "tirefem/analysis/footprint.hpp"
 
@@ -52,5 +53,12 @@ class SharedFootprints {
   mutable std::mutex mutex_;
   std::map<std::string, StaticContactResult> entries_;  // node-based: found pointers stay valid
 };
+
+// The two states of a load curve (its path kept) on either side of `load`, the last below and the first
+// at or above it, carried from the curve's mesh onto `mesh` (interpolated_onto; their Qz the curve's):
+// where a footprint on `mesh` at that load starts from (run_footprint's `nearby`). Empty when the curve
+// does not reach the load or the meshes differ in kind or meridional stations.
+std::vector<PathState> load_curve_states_near(const StaticContactResult& curve, const TyreMesh& curve_mesh,
+                                              const TyreMesh& mesh, double load);
 
 }  // namespace tirefem
