@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -324,6 +325,17 @@ StaticContactResult run_load_curve(const TyreMesh& tm, const TyreDescription& ty
   return result;
 }
 
+std::pair<const PathState*, const PathState*> states_around_load(const std::vector<PathState>& path, double load) {
+  const PathState* below = nullptr;
+  const PathState* above = nullptr;
+  for (const PathState& p : path) {
+    if (p.Qz_N < load && (!below || p.deflection_mm > below->deflection_mm)) below = &p;
+    if (p.Qz_N >= load && (!above || p.deflection_mm < above->deflection_mm)) above = &p;
+  }
+  if (!below || !above || above->deflection_mm <= below->deflection_mm) return {nullptr, nullptr};
+  return {below, above};
+}
+
 namespace {
 
 // The footprint at the study's given deflection: steps of at most max_step from the first point.
@@ -356,12 +368,9 @@ bool search_target_load(StaticContactRun& run, StaticContactResult& result, cons
   const PathState* above = nullptr;
   if (along && q0 < target) {
     run.add_known_states(along->path);
-    for (const PathState& p : along->path) {
-      if (p.Qz_N < target && (!below || p.deflection_mm > below->deflection_mm)) below = &p;
-      if (p.Qz_N >= target && (!above || p.deflection_mm < above->deflection_mm)) above = &p;
-    }
+    std::tie(below, above) = states_around_load(along->path, target);
   }
-  if (below && above && above->deflection_mm > below->deflection_mm) {
+  if (below && above) {
     lo = below->deflection_mm, q_lo = below->Qz_N, hi = above->deflection_mm, q_hi = above->Qz_N, bracketed = true;
     next = lo + (target - q_lo) * (hi - lo) / (q_hi - q_lo);
     if (progress)

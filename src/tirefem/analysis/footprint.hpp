@@ -5,6 +5,7 @@
 // step δz in equal steps (eq. 14 gives Qz); a footprint study finds δz for a target Qz.
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tirefem/analysis/inflation.hpp"
@@ -61,6 +62,9 @@ struct PathState {
   double Qz_N = 0.0;
   Eigen::VectorXd displacement;
 };
+// The states of a load curve's path on either side of `load`: the last below it and the first at or above
+// it; both nullptr unless they bracket it (the second at a larger δz).
+std::pair<const PathState*, const PathState*> states_around_load(const std::vector<PathState>& path, double load);
 
 struct StaticContactResult {
   std::string name;

@@ -93,13 +93,8 @@ void SharedFootprints::keep(const std::string& key, const StaticContactResult& r
 std::vector<PathState> load_curve_states_near(const StaticContactResult& curve, const TyreMesh& curve_mesh,
                                               const TyreMesh& mesh, double load) {
   if (!interpolates_onto(curve_mesh, mesh)) return {};
-  const PathState* below = nullptr;
-  const PathState* above = nullptr;
-  for (const PathState& p : curve.path) {
-    if (p.Qz_N < load && (!below || p.deflection_mm > below->deflection_mm)) below = &p;
-    if (p.Qz_N >= load && (!above || p.deflection_mm < above->deflection_mm)) above = &p;
-  }
-  if (!below || !above || above->deflection_mm <= below->deflection_mm) return {};
+  const auto [below, above] = states_around_load(curve.path, load);
+  if (!below) return {};
   std::vector<PathState> near;
   for (const PathState* p : {below, above})
     near.push_back({p->deflection_mm, p->Qz_N, interpolated_onto(curve_mesh, p->displacement, mesh)});
