@@ -22,6 +22,10 @@ struct Ply {
   double rubber_modulus = 0.0;  // Young's modulus of the skim rubber, MPa
   double rubber_poisson = 0.49;
   double cord_poisson = 0.3;  // only for ν12 of the Halpin–Tsai rule (rule of mixtures)
+  // Young's modulus of the cord in compression, MPa; unset: as in tension. A textile cord twisted from
+  // thousands of filaments buckles inside the rubber under a small compressive load.
+  std::optional<double> cord_compression_modulus;
+  double compression_modulus() const { return cord_compression_modulus.value_or(cord_modulus); }
 };
 
 enum class CordRubberRule { halpin_tsai, gough_tangorra };

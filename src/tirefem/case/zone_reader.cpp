@@ -14,7 +14,8 @@ namespace {
 Ply read_ply(TomlFields& f, const toml::node& n, const std::string& path, std::string name) {
   const toml::table& t = f.table(n, path,
                                  {"description", "cord_modulus", "cord_area", "ends_per_mm", "angle",
-                                  "thickness", "rubber_modulus", "rubber_poisson", "cord_poisson"});
+                                  "thickness", "rubber_modulus", "rubber_poisson", "cord_poisson",
+                                  "cord_compression_modulus"});
   if (const toml::node* d = f.get(t, path, "description")) f.string(*d, join(path, "description"));
   Ply p;
   p.name = std::move(name);
@@ -26,6 +27,11 @@ Ply read_ply(TomlFields& f, const toml::node& n, const std::string& path, std::s
   p.rubber_modulus = f.req_number(t, path, "rubber_modulus", " (MPa)");
   f.opt_number(t, path, "rubber_poisson", p.rubber_poisson, "");
   f.opt_number(t, path, "cord_poisson", p.cord_poisson, "");
+  if (f.get(t, path, "cord_compression_modulus")) {
+    double modulus = 0.0;
+    f.opt_number(t, path, "cord_compression_modulus", modulus, "");
+    p.cord_compression_modulus = modulus;
+  }
   check_ply(f.checker(), p, path);
   return p;
 }
@@ -171,6 +177,8 @@ void check_ply(const FieldChecker& c, const Ply& p, const std::string& path) {
   c.plausible(p.rubber_modulus, kModulus, join(path, "rubber_modulus"));
   c.in_range(p.rubber_poisson, 0.0, 0.5, join(path, "rubber_poisson"));
   c.in_range(p.cord_poisson, 0.0, 0.5, join(path, "cord_poisson"));
+  if (p.cord_compression_modulus)
+    c.in_range(*p.cord_compression_modulus, 0.0, p.cord_modulus, join(path, "cord_compression_modulus"));
   const double vc = p.cord_area * p.ends_per_mm / p.thickness;
   if (!(vc < 1.0))
     c.fail(path, fmt::format("cord volume fraction cord_area × ends_per_mm / thickness must be < 1 (got {})", vc));

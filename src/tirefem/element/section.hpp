@@ -1,5 +1,7 @@
 #pragma once
 // Properties of one three-layer shell element: the two membrane faces and the interlayer (core).
+#include <vector>
+
 #include <Eigen/Dense>
 
 namespace tirefem {
@@ -8,6 +10,15 @@ namespace tirefem {
 // in the element's local frame: axis 1 along the element's ξ direction (the meridian on a tyre),
 // axis 2 = normal × axis 1 (the circumferential direction). Units N/mm.
 using MembraneStiffness = Eigen::Matrix3d;
+
+// Cords that carry less in compression than in tension (Ply::cord_compression_modulus): the face's A
+// holds them at their tension modulus, and where a family's cord strain ε_c = m · [E11, E22, 2E12] is
+// negative the face's energy loses ½ k ε_c², k = (E_tension − E_compression) × cord area × ends per mm
+// (three_layer_element.cpp smooths the switch over |ε_c| < kCordSofteningBand). Nonlinear theory only.
+struct CordSoftening {
+  Eigen::Vector3d direction = Eigen::Vector3d::Zero();  // m = [d1², d2², d1 d2], d the cord direction
+  double stiffness = 0.0;                               // k, N/mm
+};
 
 struct ElementSection {
   MembraneStiffness inner_face = MembraneStiffness::Zero();  // carcass
@@ -21,6 +32,8 @@ struct ElementSection {
   // (v); zero in the paper's membrane faces (forms/face_bending_form.hpp).
   Eigen::Vector2d inner_face_bending = Eigen::Vector2d::Zero();
   Eigen::Vector2d outer_face_bending = Eigen::Vector2d::Zero();
+  // Cord families of each face softer in compression (empty: the paper's linear faces).
+  std::vector<CordSoftening> inner_cords, outer_cords;
 };
 
 // Isotropic membrane of thickness t (plane stress): A = E t / (1 − ν²) [[1, ν, 0], [ν, 1, 0], [0, 0, (1 − ν)/2]].

@@ -30,6 +30,23 @@ FaceStrain face_strain(const FaceGeometry& g, const Eigen::Matrix<double, 3, 4>&
   return s;
 }
 
+// A cord family softer in compression (section.hpp): the energy it loses, −k G(ε_c), with G'' = h the share
+// of the family's stiffness lost, 1 for ε_c ≤ −δ, 0 for ε_c ≥ δ and linear between (δ = kCordSofteningBand),
+// so the face's tangent stays continuous where a cord passes from tension into compression.
+struct CordSofteningTerms {
+  double energy = 0.0;  // G
+  double force = 0.0;   // G' (→ ε_c in compression)
+  double slope = 0.0;   // G'' = h
+};
+
+CordSofteningTerms cord_softening(double x) {
+  constexpr double d = kCordSofteningBand;
+  if (x >= d) return {};
+  if (x <= -d) return {0.5 * x * x + d * d / 6.0, x, 1.0};
+  const double r = d - x;
+  return {r * r * r / (12.0 * d), -r * r / (4.0 * d), r / (2.0 * d)};
+}
+
 // One face's enhanced-strain parameters, condensed: the energy ½ Σ_p w_p (E_p + M_p α)ᵀ A (E_p + M_p α)
 // is quadratic in α, so its minimiser is α = −H⁻¹ r, H = Σ w Mᵀ A M, r = Σ w Mᵀ A E, exactly.
 struct FaceEnhancement {
@@ -70,10 +87,12 @@ FaceEnhancement face_enhancement(const FacePoints& points, const FaceStrains& st
 
 // Adds a face's energy Σ_p ½ εᵀ A ε w_p, ε = E_p + M_p α (compatible + condensed enhanced strains), its
 // gradient Σ w Bᵀ A ε and its Hessian Σ w Bᵀ A B − Lᵀ H⁻¹ L + Σ w (Aε)·∂²E, L = Σ w Mᵀ A B (face nodes only).
+// Cord families softer in compression subtract Σ_p w_p k G(m·E_p) on the compatible strains: α minimises
+// the quadratic part alone, so the condensation stays exact and the sum is still a potential of u.
 template <int First>
 void add_face(const FacePoints& points, const NodeMatrix& reference, const NodeMatrix& u,
-              const Eigen::Matrix3d& stiffness, bool enhanced, bool nonlinear, bool with_tangent,
-              ElementResponse& out) {
+              const Eigen::Matrix3d& stiffness, const std::vector<CordSoftening>& cords, bool enhanced,
+              bool nonlinear, bool with_tangent, ElementResponse& out) {
   const FaceStrains strains = face_strains<First>(points, reference, u, nonlinear);
   const FaceEnhancement enh = face_enhancement(points, strains, stiffness, enhanced);
   Eigen::Matrix<double, 4, 12> coupling = Eigen::Matrix<double, 4, 12>::Zero();  // L
@@ -82,7 +101,7 @@ void add_face(const FacePoints& points, const NodeMatrix& reference, const NodeM
     const FaceStrain& s = strains[p];
     const double w = g.area_scale;
     const Eigen::Vector3d strain = enh.active ? Eigen::Vector3d(s.strain + g.enhanced * enh.alpha) : s.strain;
-    const Eigen::Vector3d stress = stiffness * strain;
+    Eigen::Vector3d stress = stiffness * strain;
     out.energy += 0.5 * w * strain.dot(stress);
     Eigen::Matrix<double, 3, 12> b;  // rows: ∂[E11, E22, 2E12]/∂x_a
     for (int a = 0; a < 4; ++a) {
@@ -90,6 +109,18 @@ void add_face(const FacePoints& points, const NodeMatrix& reference, const NodeM
       b.block<1, 3>(1, 3 * a) = g.d2[a] * s.f2.transpose();
       b.block<1, 3>(2, 3 * a) = g.d1[a] * s.f2.transpose() + g.d2[a] * s.f1.transpose();
     }
+    // Cords softer in compression (nonlinear theory only): −k G(m·E) on the compatible strain.
+    if (nonlinear)
+      for (const CordSoftening& c : cords) {
+        const CordSofteningTerms t = cord_softening(c.direction.dot(s.strain));
+        if (t.slope == 0.0) continue;
+        out.energy -= w * c.stiffness * t.energy;
+        stress -= (c.stiffness * t.force) * c.direction;
+        if (with_tangent) {
+          const Eigen::Matrix<double, 1, 12> mb = c.direction.transpose() * b;
+          out.tangent.block<12, 12>(3 * First, 3 * First).noalias() -= (w * c.stiffness * t.slope) * mb.transpose() * mb;
+        }
+      }
     out.force.segment<12>(3 * First).noalias() += b.transpose() * (w * stress);
     if (!with_tangent) continue;
     const Eigen::Matrix<double, 3, 12> cb = (w * stiffness) * b;
@@ -181,8 +212,10 @@ ElementResponse three_layer_element(const ElementGeometry& geometry, const NodeM
   ElementResponse out;
   const bool nonlinear = kinematics == Kinematics::nonlinear;
   const NodeMatrix u = current - reference;
-  add_face<0>(geometry.inner, reference, u, section.inner_face, section.enhanced_faces, nonlinear, with_tangent, out);
-  add_face<4>(geometry.outer, reference, u, section.outer_face, section.enhanced_faces, nonlinear, with_tangent, out);
+  add_face<0>(geometry.inner, reference, u, section.inner_face, section.inner_cords, section.enhanced_faces, nonlinear,
+              with_tangent, out);
+  add_face<4>(geometry.outer, reference, u, section.outer_face, section.outer_cords, section.enhanced_faces, nonlinear,
+              with_tangent, out);
   add_core(geometry.core, reference, u, section, nonlinear, with_tangent, out);
   return out;
 }
@@ -203,6 +236,17 @@ ElementPointState three_layer_point_state(const NodeMatrix& reference, const Nod
   }
   st.inner_resultant = section.inner_face * st.inner_strain;
   st.outer_resultant = section.outer_face * st.outer_strain;
+  if (nonlinear) {  // cords softer in compression act on the compatible strains (add_face)
+    const auto soften = [](const std::vector<CordSoftening>& cords, const Eigen::Vector3d& compatible,
+                           Eigen::Vector3d& resultant) {
+      for (const CordSoftening& c : cords)
+        resultant -= (c.stiffness * cord_softening(c.direction.dot(compatible)).force) * c.direction;
+    };
+    soften(section.inner_cords, face_strain(inner, reference.leftCols<4>(), u.leftCols<4>(), true).strain,
+           st.inner_resultant);
+    soften(section.outer_cords, face_strain(outer, reference.rightCols<4>(), u.rightCols<4>(), true).strain,
+           st.outer_resultant);
+  }
   const Eigen::Vector3d core =
       core_geometry(reference, xi, eta).coefficients * tying_strains(reference, u, nonlinear, nullptr);
   st.core_shear = core.head<2>();

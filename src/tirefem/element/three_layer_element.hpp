@@ -11,6 +11,11 @@
 
 namespace tirefem {
 
+// Half-width of the cord strain band over which a cord family softer in compression (section.hpp) loses
+// its stiffness: from all of it at ε_c = −δ to none at +δ. The force along the cords then differs from the
+// bimodular law's by at most k δ / 4 (at ε_c = 0).
+inline constexpr double kCordSofteningBand = 2.5e-4;
+
 struct ElementResponse {
   double energy = 0.0;
   ElementVector force = ElementVector::Zero();    // internal force, ∂Π/∂f

@@ -1,5 +1,6 @@
 #include "tirefem/tyre/ply_stiffness.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -109,6 +110,20 @@ MembraneStiffness face_stiffness(const FaceLayup& face) {
   MembraneStiffness a = face.direct_stiffness.value_or(MembraneStiffness::Zero());
   for (const Ply& ply : face.plies) a += ply_membrane_stiffness(ply, face.rule);
   return a;
+}
+
+std::vector<CordSoftening> face_cord_softening(const FaceLayup& face) {
+  std::vector<CordSoftening> out;
+  for (const Ply& ply : face.plies) {
+    const double k = (ply.cord_modulus - ply.compression_modulus()) * ply.cord_area * ply.ends_per_mm;
+    if (!(k > 0.0)) continue;
+    const Eigen::Vector2d d = cord_direction(ply.angle_deg);
+    const Eigen::Vector3d m(d[0] * d[0], d[1] * d[1], d[0] * d[1]);
+    auto same = std::find_if(out.begin(), out.end(), [&](const CordSoftening& c) { return (c.direction - m).norm() < 1e-12; });
+    if (same != out.end()) same->stiffness += k;
+    else out.push_back({m, k});
+  }
+  return out;
 }
 
 double cord_strain(const Eigen::Vector3d& e, double angle_deg) {

@@ -125,6 +125,8 @@ TyreMesh build_tyre_mesh(const TyreDescription& tyre, const MeshSettings& settin
     sec.outer_face = face_stiffness(z.outer);
     sec.inner_face_bending = z.inner.bending_stiffness;
     sec.outer_face_bending = z.outer.bending_stiffness;
+    sec.inner_cords = face_cord_softening(z.inner);
+    sec.outer_cords = face_cord_softening(z.outer);
     sec.core_shear_modulus = z.core_shear_modulus;
     sec.core_normal_modulus = z.core_normal_modulus;
     sec.enhanced_faces = settings.faces == MeshSettings::Faces::enhanced;
