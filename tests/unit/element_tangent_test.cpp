@@ -12,27 +12,6 @@
 namespace tirefem {
 namespace {
 
-// A curved, distorted element: carcass face on a cylinder-like patch, breaker 4 mm above.
-NodeMatrix curved_element() {
-  NodeMatrix x;
-  const double xs[4] = {0, 11, 12, -1}, ys[4] = {0, 1, 13, 10};
-  for (int a = 0; a < 4; ++a) {
-    const double z = 0.01 * (xs[a] * xs[a] + 0.5 * ys[a] * ys[a]);
-    x.col(a) = Eigen::Vector3d(xs[a], ys[a], z);
-    x.col(a + 4) = Eigen::Vector3d(xs[a] - 0.04 * xs[a], ys[a] - 0.02 * ys[a], z + 4.0);
-  }
-  return x;
-}
-
-NodeMatrix randomly_deformed(const NodeMatrix& x, double amplitude, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-amplitude, amplitude);
-  NodeMatrix y = x;
-  for (int k = 0; k < 8; ++k)
-    for (int c = 0; c < 3; ++c) y(c, k) += u(rng);
-  return y;
-}
-
 template <class ForceOf>
 double max_relative_tangent_error(const NodeMatrix& x, const ElementMatrix& k, ForceOf force_of) {
   const double h = 1e-6;

@@ -15,19 +15,6 @@
 namespace tirefem::verification {
 namespace {
 
-// A curved, distorted element: carcass face on a doubly curved patch, breaker 4 mm above (as in the
-// unit tangent test).
-NodeMatrix curved_element() {
-  NodeMatrix x;
-  const double xs[4] = {0, 11, 12, -1}, ys[4] = {0, 1, 13, 10};
-  for (int a = 0; a < 4; ++a) {
-    const double z = 0.01 * (xs[a] * xs[a] + 0.5 * ys[a] * ys[a]);
-    x.col(a) = Eigen::Vector3d(xs[a], ys[a], z);
-    x.col(a + 4) = Eigen::Vector3d(xs[a] - 0.04 * xs[a], ys[a] - 0.02 * ys[a], z + 4.0);
-  }
-  return x;
-}
-
 struct RigidMotion {
   const char* name;
   Eigen::Matrix3d rotation;
