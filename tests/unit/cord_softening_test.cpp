@@ -156,16 +156,16 @@ TEST(CordSoftening, PliesOfOneDirectionMergeIntoOneFamily) {
 
 TEST(CordSoftening, CaseReaderTakesTheCompressionModulusAndNamesItWhenOutOfRange) {
   using namespace case_test;
-  const Case c = parse_case(edited("cord_compression_modulus = 1050.0", "cord_compression_modulus = 350.0"), "case.toml");
+  const Case c = parse_case(edited("cord_modulus = 3500.0", "cord_modulus = 3500.0\ncord_compression_modulus = 350.0"),
+                            "case.toml");
   ASSERT_TRUE(c.tyre.zones[0].inner.plies[0].cord_compression_modulus.has_value());
   EXPECT_EQ(*c.tyre.zones[0].inner.plies[0].cord_compression_modulus, 350.0);
   EXPECT_FALSE(c.tyre.zones[0].outer.plies[0].cord_compression_modulus.has_value());
-  // without the key, the cords are as stiff in compression as in tension
-  const Case plain = parse_case(edited("cord_compression_modulus = 1050.0\n", ""), "case.toml");
-  EXPECT_FALSE(plain.tyre.zones[0].inner.plies[0].cord_compression_modulus.has_value());
-  EXPECT_CONTAINS(error_of(edited("cord_compression_modulus = 1050.0", "cord_compression_modulus = 4000.0")),
+  // without the key (the example), the cords are as stiff in compression as in tension
+  EXPECT_FALSE(parse_case(example_text(), "case.toml").tyre.zones[0].inner.plies[0].cord_compression_modulus.has_value());
+  EXPECT_CONTAINS(error_of(edited("cord_modulus = 3500.0", "cord_modulus = 3500.0\ncord_compression_modulus = 4000.0")),
                   "tyre.plies.carcass.cord_compression_modulus");
-  EXPECT_CONTAINS(error_of(edited("cord_compression_modulus = 1050.0", "cord_compression_modulus = -1.0")),
+  EXPECT_CONTAINS(error_of(edited("cord_modulus = 3500.0", "cord_modulus = 3500.0\ncord_compression_modulus = -1.0")),
                   "tyre.plies.carcass.cord_compression_modulus");
 }
 
