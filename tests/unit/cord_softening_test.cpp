@@ -152,6 +152,7 @@ TEST(CordSoftening, PliesOfOneDirectionMergeIntoOneFamily) {
   // a cord's force in compression uses its compression modulus
   EXPECT_DOUBLE_EQ(cord_force(carcass_ply(350.0), -0.01), 350.0 * 0.33 * -0.01);
   EXPECT_DOUBLE_EQ(cord_force(carcass_ply(350.0), 0.01), 3500.0 * 0.33 * 0.01);
+  EXPECT_DOUBLE_EQ(cord_force(carcass_ply(350.0), -0.01, /*bimodular=*/false), 3500.0 * 0.33 * -0.01);
 }
 
 TEST(CordSoftening, CaseReaderTakesTheCompressionModulusAndNamesItWhenOutOfRange) {

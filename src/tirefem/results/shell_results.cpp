@@ -23,7 +23,7 @@ FaceCordResults cord_results(const FaceLayup& face, const Eigen::Vector3d& strai
   for (const Ply& ply : face.plies) {
     const double e = engineering_strain(cord_strain(strain, ply.angle_deg), kinematics);
     r.strain.push_back(e);
-    r.force_N.push_back(cord_force(ply, e));
+    r.force_N.push_back(cord_force(ply, e, kinematics == Kinematics::nonlinear));
   }
   return r;
 }

@@ -46,10 +46,12 @@ MembraneStiffness face_stiffness(const FaceLayup& face);
 // Strain along the cords from the face's membrane strain [E11, E22, 2E12] (tyre frame): ε_c = dᵀ E d.
 double cord_strain(const Eigen::Vector3d& membrane_strain, double angle_deg);
 
-// Tension in one cord, N: E_cord · A_cord · ε_c, with the compression modulus where ε_c < 0 (the rubber's
-// share of the ply force is not the cord's).
-inline double cord_force(const Ply& ply, double cord_strain_value) {
-  return (cord_strain_value < 0.0 ? ply.compression_modulus() : ply.cord_modulus) * ply.cord_area * cord_strain_value;
+// Tension in one cord, N: E_cord · A_cord · ε_c, with the compression modulus where ε_c < 0 unless
+// `bimodular` is false (the linear theory keeps linear faces); the rubber's share of the ply force is not
+// the cord's.
+inline double cord_force(const Ply& ply, double cord_strain_value, bool bimodular = true) {
+  const double modulus = bimodular && cord_strain_value < 0.0 ? ply.compression_modulus() : ply.cord_modulus;
+  return modulus * ply.cord_area * cord_strain_value;
 }
 
 // The face's cord families softer in compression than in tension (element/section.hpp), plies of the
