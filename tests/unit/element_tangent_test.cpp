@@ -1,7 +1,6 @@
 // Tangent stiffness of every element-level term against central finite differences of its force
 // (reference: the definition K = ∂F/∂f; tolerance 1e-6 relative, what central differences with
 // h = 1e-6 of a smooth function give in double precision).
-#include <random>
 
 #include <gtest/gtest.h>
 

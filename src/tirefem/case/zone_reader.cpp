@@ -27,11 +27,8 @@ Ply read_ply(TomlFields& f, const toml::node& n, const std::string& path, std::s
   p.rubber_modulus = f.req_number(t, path, "rubber_modulus", " (MPa)");
   f.opt_number(t, path, "rubber_poisson", p.rubber_poisson, "");
   f.opt_number(t, path, "cord_poisson", p.cord_poisson, "");
-  if (f.get(t, path, "cord_compression_modulus")) {
-    double modulus = 0.0;
-    f.opt_number(t, path, "cord_compression_modulus", modulus, "");
-    p.cord_compression_modulus = modulus;
-  }
+  if (f.get(t, path, "cord_compression_modulus"))
+    p.cord_compression_modulus = f.req_number(t, path, "cord_compression_modulus", " (MPa)");
   check_ply(f.checker(), p, path);
   return p;
 }

@@ -227,8 +227,10 @@ ElementPointState three_layer_point_state(const NodeMatrix& reference, const Nod
   const NodeMatrix u = current - reference;
   const FaceGeometry inner = face_geometry(reference, 0, xi, eta), outer = face_geometry(reference, 4, xi, eta);
   ElementPointState st;
-  st.inner_strain = face_strain(inner, reference.leftCols<4>(), u.leftCols<4>(), nonlinear).strain;
-  st.outer_strain = face_strain(outer, reference.rightCols<4>(), u.rightCols<4>(), nonlinear).strain;
+  const Eigen::Vector3d inner_compatible = face_strain(inner, reference.leftCols<4>(), u.leftCols<4>(), nonlinear).strain;
+  const Eigen::Vector3d outer_compatible = face_strain(outer, reference.rightCols<4>(), u.rightCols<4>(), nonlinear).strain;
+  st.inner_strain = inner_compatible;
+  st.outer_strain = outer_compatible;
   if (section.enhanced_faces) {  // the enhanced strains need the parameters from the Gauss points
     const ElementGeometry at_gauss = element_geometry(reference);
     st.inner_strain += inner.enhanced * face_alpha<0>(at_gauss.inner, reference, u, section.inner_face, nonlinear);
@@ -242,10 +244,8 @@ ElementPointState three_layer_point_state(const NodeMatrix& reference, const Nod
       for (const CordSoftening& c : cords)
         resultant -= (c.stiffness * cord_softening(c.direction.dot(compatible)).force) * c.direction;
     };
-    soften(section.inner_cords, face_strain(inner, reference.leftCols<4>(), u.leftCols<4>(), true).strain,
-           st.inner_resultant);
-    soften(section.outer_cords, face_strain(outer, reference.rightCols<4>(), u.rightCols<4>(), true).strain,
-           st.outer_resultant);
+    soften(section.inner_cords, inner_compatible, st.inner_resultant);
+    soften(section.outer_cords, outer_compatible, st.outer_resultant);
   }
   const Eigen::Vector3d core =
       core_geometry(reference, xi, eta).coefficients * tying_strains(reference, u, nonlinear, nullptr);
