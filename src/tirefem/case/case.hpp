@@ -37,6 +37,10 @@ struct FaceLayup {
   CordRubberRule rule = CordRubberRule::halpin_tsai;
   // A (N/mm), Voigt [11, 22, 12] with engineering shear; axis 1 meridional, axis 2 circumferential.
   std::optional<Eigen::Matrix3d> direct_stiffness;
+  // The share of the `rubber` layers in direct_stiffness (Σ of their isotropic membranes) and their Σ μ t
+  // (N/mm), which TyreDescription::rubber_law may give a large-strain law.
+  Eigen::Matrix3d rubber_stiffness = Eigen::Matrix3d::Zero();
+  double rubber_shear_stiffness = 0.0;
   // The face's own bending stiffness D (N·mm), [meridional, circumferential]; zero in the paper's membrane
   // faces (forms/face_bending_form.hpp).
   Eigen::Vector2d bending_stiffness = Eigen::Vector2d::Zero();
@@ -59,8 +63,15 @@ struct RimFlangeDescription {
   double stiffness = 20.0;  // Winkler stiffness of the rubber between the outer face and the flange, N/mm³
 };
 
+// The law of the faces' rubber layers (`rubber = { E, nu, thickness }`), nonlinear theory:
+// saint_venant_kirchhoff: linear in the Green–Lagrange strain, the paper's; neo_hookean: incompressible
+// neo-Hookean membranes of μ = E / 2(1 + ν), which keep their stiffness in large compression
+// (element/rubber_membrane.hpp). The plies' skim rubber stays in the ply's linear law either way.
+enum class RubberLaw { saint_venant_kirchhoff, neo_hookean };
+
 struct TyreDescription {
   std::string name;
+  RubberLaw rubber_law = RubberLaw::saint_venant_kirchhoff;
   std::vector<Eigen::Vector2d> profile;  // carcass line (x, r), equator (x = 0) → bead, x ≥ 0
   std::vector<Zone> zones;
   Table interlayer_thickness;        // h(s), mm: distance of the outer face from the carcass along the normal

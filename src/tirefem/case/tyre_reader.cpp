@@ -9,14 +9,18 @@
 namespace tirefem::case_reading {
 
 TyreRead read_tyre(TomlFields& f, const toml::node& n, const std::string& path) {
-  const toml::table& t =
-      f.table(n, path, {"name", "cord_rubber_rule", "profile", "plies", "zones", "interlayer", "tread", "rim_flange"});
+  const toml::table& t = f.table(n, path, {"name", "cord_rubber_rule", "rubber_law", "profile", "plies", "zones",
+                                           "interlayer", "tread", "rim_flange"});
   TyreRead r;
   TyreDescription& d = r.tyre;
   if (const toml::node* v = f.get(t, path, "name")) d.name = f.string(*v, join(path, "name"));
   CordRubberRule default_rule = CordRubberRule::halpin_tsai;
   if (const toml::node* v = f.get(t, path, "cord_rubber_rule"))
     default_rule = read_rule(f, *v, join(path, "cord_rubber_rule"));
+  if (const toml::node* v = f.get(t, path, "rubber_law"))
+    d.rubber_law = f.choice(*v, join(path, "rubber_law"), {"saint_venant_kirchhoff", "neo_hookean"}) == 1
+                       ? RubberLaw::neo_hookean
+                       : RubberLaw::saint_venant_kirchhoff;
   d.profile = read_profile(f, t, path);
   const std::map<std::string, Ply> plies = read_plies(f, t, path);
   d.zones = read_zones(f, t, path, plies, default_rule);

@@ -33,8 +33,9 @@ Ply read_ply(TomlFields& f, const toml::node& n, const std::string& path, std::s
   return p;
 }
 
-// rubber = { E, nu, thickness } or an array of them: their isotropic membrane stiffness, summed.
-Eigen::Matrix3d read_rubber_layers(TomlFields& f, const toml::node& r, const std::string& rp) {
+// rubber = { E, nu, thickness } or an array of them: their isotropic membrane stiffness, summed, into the
+// face's rubber share (and Σ μ t).
+void read_rubber_layers(TomlFields& f, const toml::node& r, const std::string& rp, FaceLayup& face) {
   std::vector<std::pair<const toml::node*, std::string>> layers;
   if (r.is_array()) {
     const toml::array& a = f.array(r, rp, "rubber layers { E, nu, thickness }");
@@ -42,7 +43,6 @@ Eigen::Matrix3d read_rubber_layers(TomlFields& f, const toml::node& r, const std
   } else {
     layers.emplace_back(&r, rp);
   }
-  Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
   for (const auto& [node, lp] : layers) {
     const toml::table& lt = f.table(*node, lp, {"E", "nu", "thickness"});
     const double e = f.req_number(lt, lp, "E", " (MPa)");
@@ -52,9 +52,9 @@ Eigen::Matrix3d read_rubber_layers(TomlFields& f, const toml::node& r, const std
     f.checker().plausible(e, kModulus, join(lp, "E"));
     f.checker().in_range(nu, 0.0, 0.5, join(lp, "nu"));
     f.checker().plausible(h, kThickness, join(lp, "thickness"));
-    sum += isotropic_membrane(e, nu, h);
+    face.rubber_stiffness += isotropic_membrane(e, nu, h);
+    face.rubber_shear_stiffness += e / (2.0 * (1.0 + nu)) * h;
   }
-  return sum;
 }
 
 Eigen::Matrix3d read_stiffness(TomlFields& f, const toml::node& s, const std::string& sp) {
@@ -98,7 +98,8 @@ FaceLayup read_face(TomlFields& f, const toml::node& n, const std::string& path,
   Eigen::Matrix3d direct = Eigen::Matrix3d::Zero();
   bool has_direct = false;
   if (const toml::node* r = f.get(t, path, "rubber")) {
-    direct += read_rubber_layers(f, *r, join(path, "rubber"));
+    read_rubber_layers(f, *r, join(path, "rubber"), face);
+    direct += face.rubber_stiffness;
     has_direct = true;
   }
   if (const toml::node* s = f.get(t, path, "stiffness")) {

@@ -20,6 +20,14 @@ struct CordSoftening {
   double stiffness = 0.0;                               // k, N/mm
 };
 
+// The rubber layers of a face under the neo-Hookean law (TyreDescription::rubber_law, rubber_membrane.hpp):
+// on the compatible strains their share of the linear face, ½ Eᵀ A_r E, is replaced by the neo-Hookean
+// membrane's energy. Nonlinear theory only; zero shear stiffness: the face stays linear.
+struct RubberFaceLaw {
+  double shear_stiffness = 0.0;                           // Σ μ t over the layers, N/mm
+  MembraneStiffness linear = MembraneStiffness::Zero();   // A_r, their share of the face's A
+};
+
 struct ElementSection {
   MembraneStiffness inner_face = MembraneStiffness::Zero();  // carcass
   MembraneStiffness outer_face = MembraneStiffness::Zero();  // breaker / sidewall layer
@@ -34,6 +42,8 @@ struct ElementSection {
   Eigen::Vector2d outer_face_bending = Eigen::Vector2d::Zero();
   // Cord families of each face softer in compression (empty: the paper's linear faces).
   std::vector<CordSoftening> inner_cords, outer_cords;
+  // Rubber layers of each face under the neo-Hookean law (zero: the paper's linear faces).
+  RubberFaceLaw inner_rubber, outer_rubber;
 };
 
 // Isotropic membrane of thickness t (plane stress): A = E t / (1 − ν²) [[1, ν, 0], [ν, 1, 0], [0, 0, (1 − ν)/2]].

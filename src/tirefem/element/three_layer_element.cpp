@@ -1,5 +1,7 @@
 #include "tirefem/element/three_layer_element.hpp"
 
+#include "tirefem/element/rubber_membrane.hpp"
+
 namespace tirefem {
 namespace {
 
@@ -87,12 +89,13 @@ FaceEnhancement face_enhancement(const FacePoints& points, const FaceStrains& st
 
 // Adds a face's energy Σ_p ½ εᵀ A ε w_p, ε = E_p + M_p α (compatible + condensed enhanced strains), its
 // gradient Σ w Bᵀ A ε and its Hessian Σ w Bᵀ A B − Lᵀ H⁻¹ L + Σ w (Aε)·∂²E, L = Σ w Mᵀ A B (face nodes only).
-// Cord families softer in compression subtract Σ_p w_p k G(m·E_p) on the compatible strains: α minimises
-// the quadratic part alone, so the condensation stays exact and the sum is still a potential of u.
+// Cord families softer in compression subtract Σ_p w_p k G(m·E_p) on the compatible strains, and rubber
+// layers under the neo-Hookean law replace their linear share ½ Eᵀ A_r E there by W(E): α minimises the
+// quadratic part alone, so the condensation stays exact and the sum is still a potential of u.
 template <int First>
 void add_face(const FacePoints& points, const NodeMatrix& reference, const NodeMatrix& u,
-              const Eigen::Matrix3d& stiffness, const std::vector<CordSoftening>& cords, bool enhanced,
-              bool nonlinear, bool with_tangent, ElementResponse& out) {
+              const Eigen::Matrix3d& stiffness, const std::vector<CordSoftening>& cords, const RubberFaceLaw& rubber,
+              bool enhanced, bool nonlinear, bool with_tangent, ElementResponse& out) {
   const FaceStrains strains = face_strains<First>(points, reference, u, nonlinear);
   const FaceEnhancement enh = face_enhancement(points, strains, stiffness, enhanced);
   Eigen::Matrix<double, 4, 12> coupling = Eigen::Matrix<double, 4, 12>::Zero();  // L
@@ -121,6 +124,15 @@ void add_face(const FacePoints& points, const NodeMatrix& reference, const NodeM
           out.tangent.block<12, 12>(3 * First, 3 * First).noalias() -= (w * c.stiffness * t.slope) * mb.transpose() * mb;
         }
       }
+    if (nonlinear && rubber.shear_stiffness > 0.0) {  // neo-Hookean rubber layers on the compatible strain
+      const RubberMembraneTerms r = rubber_membrane(s.strain, rubber.shear_stiffness);
+      const Eigen::Vector3d linear = rubber.linear * s.strain;
+      out.energy += w * (r.energy - 0.5 * s.strain.dot(linear));
+      stress += r.resultant - linear;
+      if (with_tangent)
+        out.tangent.block<12, 12>(3 * First, 3 * First).noalias() +=
+            b.transpose() * ((w * (r.stiffness - rubber.linear)) * b);
+    }
     out.force.segment<12>(3 * First).noalias() += b.transpose() * (w * stress);
     if (!with_tangent) continue;
     const Eigen::Matrix<double, 3, 12> cb = (w * stiffness) * b;
@@ -212,10 +224,10 @@ ElementResponse three_layer_element(const ElementGeometry& geometry, const NodeM
   ElementResponse out;
   const bool nonlinear = kinematics == Kinematics::nonlinear;
   const NodeMatrix u = current - reference;
-  add_face<0>(geometry.inner, reference, u, section.inner_face, section.inner_cords, section.enhanced_faces, nonlinear,
-              with_tangent, out);
-  add_face<4>(geometry.outer, reference, u, section.outer_face, section.outer_cords, section.enhanced_faces, nonlinear,
-              with_tangent, out);
+  add_face<0>(geometry.inner, reference, u, section.inner_face, section.inner_cords, section.inner_rubber,
+              section.enhanced_faces, nonlinear, with_tangent, out);
+  add_face<4>(geometry.outer, reference, u, section.outer_face, section.outer_cords, section.outer_rubber,
+              section.enhanced_faces, nonlinear, with_tangent, out);
   add_core(geometry.core, reference, u, section, nonlinear, with_tangent, out);
   return out;
 }
@@ -238,14 +250,16 @@ ElementPointState three_layer_point_state(const NodeMatrix& reference, const Nod
   }
   st.inner_resultant = section.inner_face * st.inner_strain;
   st.outer_resultant = section.outer_face * st.outer_strain;
-  if (nonlinear) {  // cords softer in compression act on the compatible strains (add_face)
-    const auto soften = [](const std::vector<CordSoftening>& cords, const Eigen::Vector3d& compatible,
-                           Eigen::Vector3d& resultant) {
+  if (nonlinear) {  // cords softer in compression and neo-Hookean rubber act on the compatible strains (add_face)
+    const auto correct = [](const std::vector<CordSoftening>& cords, const RubberFaceLaw& rubber,
+                            const Eigen::Vector3d& compatible, Eigen::Vector3d& resultant) {
       for (const CordSoftening& c : cords)
         resultant -= (c.stiffness * cord_softening(c.direction.dot(compatible)).force) * c.direction;
+      if (rubber.shear_stiffness > 0.0)
+        resultant += rubber_membrane(compatible, rubber.shear_stiffness).resultant - rubber.linear * compatible;
     };
-    soften(section.inner_cords, inner_compatible, st.inner_resultant);
-    soften(section.outer_cords, outer_compatible, st.outer_resultant);
+    correct(section.inner_cords, section.inner_rubber, inner_compatible, st.inner_resultant);
+    correct(section.outer_cords, section.outer_rubber, outer_compatible, st.outer_resultant);
   }
   const Eigen::Vector3d core =
       core_geometry(reference, xi, eta).coefficients * tying_strains(reference, u, nonlinear, nullptr);

@@ -127,6 +127,10 @@ TyreMesh build_tyre_mesh(const TyreDescription& tyre, const MeshSettings& settin
     sec.outer_face_bending = z.outer.bending_stiffness;
     sec.inner_cords = face_cord_softening(z.inner);
     sec.outer_cords = face_cord_softening(z.outer);
+    if (tyre.rubber_law == RubberLaw::neo_hookean) {
+      sec.inner_rubber = {z.inner.rubber_shear_stiffness, z.inner.rubber_stiffness};
+      sec.outer_rubber = {z.outer.rubber_shear_stiffness, z.outer.rubber_stiffness};
+    }
     sec.core_shear_modulus = z.core_shear_modulus;
     sec.core_normal_modulus = z.core_normal_modulus;
     sec.enhanced_faces = settings.faces == MeshSettings::Faces::enhanced;
