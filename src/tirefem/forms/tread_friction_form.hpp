@@ -98,6 +98,7 @@ class TreadFrictionForm final : public Form {
   // the limit the exact tangent swings between stick and slip from one iterate to the next (a chain of
   // points along a line re-sticking and sliding), and Newton cycles.
   void set_jacobian_smoothing(double band) { jacobian_smoothing_ = band; }
+  double jacobian_smoothing() const { return jacobian_smoothing_; }
 
   // The plan at u for a contact region (per point; empty: {g > 0} at u), by marching along each line
   // in the direction of the flow with the return mapping of eq. (15).
