@@ -92,11 +92,13 @@ TEST(RubberMembrane, UniaxialStripCarriesTheClosedFormForce) {
 ElementSection rubber_section(bool enhanced) {
   ElementSection s = anisotropic_test_section();
   s.enhanced_faces = enhanced;
-  const MembraneStiffness outer = isotropic_membrane(8.0, 0.49, 4.0), inner = isotropic_membrane(4.0, 0.49, 1.0);
-  s.outer_face += outer;
-  s.inner_face += inner;
-  s.outer_rubber = {8.0 / 2.98 * 4.0, outer};
-  s.inner_rubber = {4.0 / 2.98 * 1.0, inner};
+  const auto layer = [](double e, double nu, double t) {  // μ t with μ = E/2(1 + ν), and its linear face
+    return RubberFaceLaw{e / (2 * (1 + nu)) * t, isotropic_membrane(e, nu, t)};
+  };
+  s.outer_rubber = layer(8.0, 0.49, 4.0);
+  s.inner_rubber = layer(4.0, 0.49, 1.0);
+  s.outer_face += s.outer_rubber.linear;
+  s.inner_face += s.inner_rubber.linear;
   return s;
 }
 
