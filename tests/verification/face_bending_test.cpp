@@ -28,6 +28,8 @@ std::vector<ElementSection> bending_sections(const ShellMesh& mesh, unsigned see
   for (ElementSection& s : sections) {
     s.inner_face_bending = {d(rng), d(rng)};
     s.outer_face_bending = {d(rng), d(rng)};
+    s.inner_face_in_plane_bending = {d(rng), d(rng)};
+    s.outer_face_in_plane_bending = {d(rng), d(rng)};
   }
   return sections;
 }
@@ -278,6 +280,80 @@ double wrinkling_load_error(int elements) {
 // The discretisation error, O((qh)²): under 1% at 20 elements per wave, a quarter of it at 40.
 TEST(FaceBending, ACompressedFaceOnAFoundationWrinklesAtTwoRootKD) {
   const double coarse = wrinkling_load_error(240), fine = wrinkling_load_error(480);
+  EXPECT_LT(std::abs(coarse), 0.01);
+  EXPECT_LT(std::abs(fine), 0.0025);
+  EXPECT_NEAR(coarse / fine, 4.0, 0.8);
+}
+
+// A ply compressed along its cords kinks in its own plane: the cords turn (w(x) across them, in the
+// face's plane) and the rubber between them shears. With in-plane shear stiffness A66 (= G t) and the
+// cords' in-plane bending stiffness D, a strip of length L with its ends held across (w = 0) stores
+// ½ ∫ (A66 − N) w'² + D w''², so it kinks at N = A66 + D (π/L)² (Rosen's limit G t for D = 0, where
+// every wavelength, down to the mesh's, kinks at once). Cords along x, A11 3·10⁴ N/mm (stiffer cords leave
+// Newton's residual at round-off above its tolerance): the strip (4 mm wide) could also bend as a beam,
+// and the shear mode's A66 b acts in series with its Euler load P_E = π² A11 b³/12L² (0.4% of A66 lower);
+// its shortening (5e-5) does not count. The inner face is held, the outer one loaded and held in z.
+bool kink_free(double load, int n, double in_plane_bending) {
+  const double length = 40.0, width = 4.0, core = 1.0;
+  const ShellMesh mesh = plate_mesh(length, width, n, 1, 0.0, core);
+  ElementSection section;
+  section.outer_face = section.inner_face = MembraneStiffness::Zero();
+  section.outer_face(0, 0) = section.inner_face(0, 0) = 3e4;
+  section.outer_face(1, 1) = section.inner_face(1, 1) = 10.0;
+  section.outer_face(2, 2) = section.inner_face(2, 2) = 1.0;  // A66
+  section.core_normal_modulus = 10.0;
+  section.core_shear_modulus = 1e-9;  // no foundation for w
+  section.outer_face_in_plane_bending = {in_plane_bending, 0.0};
+  const std::vector<ElementSection> sections(mesh.element_count(), section);
+  DofMap dofs(mesh.dof_count());
+  std::vector<int> fixed;
+  for (int q = 0; q < mesh.pair_count(); ++q) {
+    for (int c = 0; c < 3; ++c) fixed.push_back(inner_dof(q, c));
+    fixed.push_back(outer_dof(q, 2));
+  }
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(mesh.dof_count());
+  for (int j = 0; j <= 1; ++j) {
+    fixed.push_back(outer_dof(mesh.pair_index(n / 2, j), 0));
+    for (int end : {0, n}) fixed.push_back(outer_dof(mesh.pair_index(end, j), 1));
+    f[outer_dof(mesh.pair_index(0, j), 0)] = 0.5 * load * width;
+    f[outer_dof(mesh.pair_index(n, j), 0)] = -0.5 * load * width;
+  }
+  dofs.fix(fixed);
+  std::vector<std::unique_ptr<Form>> forms;
+  forms.push_back(std::make_unique<ShellInternalForce>(mesh, sections, Kinematics::nonlinear));
+  forms.push_back(std::make_unique<FaceBendingForm>(mesh, sections, Kinematics::nonlinear, false));
+  forms.push_back(std::make_unique<NodalLoadForm>(f));
+  NonlinearProblem problem(dofs, std::move(forms));
+  Eigen::VectorXd u;
+  const bool stable = equilibrium_from_rest_is_stable(problem, u);
+  double across = 0.0;
+  for (int q = 0; q < mesh.pair_count(); ++q) across = std::max(across, std::abs(u[outer_dof(q, 1)]));
+  EXPECT_LT(across, 1e-9) << "the nearest equilibrium is the straight ply";
+  return stable;
+}
+
+double kink_load(int n, double in_plane_bending) {
+  const double length = 40.0, width = 4.0, a66 = 1.0, a11 = 3e4;
+  const double euler = M_PI * M_PI * a11 * std::pow(width, 3) / (12.0 * length * length);
+  const double expected = a66 / (1.0 + a66 * width / euler) + in_plane_bending * std::pow(M_PI / length, 2);
+  double stable = 0.8 * expected, unstable = 1.2 * expected;
+  EXPECT_TRUE(kink_free(stable, n, in_plane_bending));
+  EXPECT_FALSE(kink_free(unstable, n, in_plane_bending));
+  while (unstable - stable > 2e-5 * expected) {
+    const double mid = 0.5 * (stable + unstable);
+    (kink_free(mid, n, in_plane_bending) ? stable : unstable) = mid;
+  }
+  const double fe = 0.5 * (stable + unstable);
+  std::printf("  kink load, D = %g N·mm, %d elements: FE %.4f N/mm, expected %.4f N/mm (%+.3f%%)\n",
+              in_plane_bending, n, fe, expected, 100 * (fe / expected - 1));
+  return fe / expected - 1.0;
+}
+
+// Without the cords' bending the kink load is A66 on any mesh; with D = 100 N·mm it rises by 62% and the
+// second difference's error, O((πh/L)²), falls fourfold as h halves.
+TEST(FaceBending, ACompressedPlyKinksInItsPlaneAtShearPlusCordBending) {
+  EXPECT_LT(std::abs(kink_load(20, 0.0)), 1e-4);
+  const double coarse = kink_load(20, 100.0), fine = kink_load(40, 100.0);
   EXPECT_LT(std::abs(coarse), 0.01);
   EXPECT_LT(std::abs(fine), 0.0025);
   EXPECT_NEAR(coarse / fine, 4.0, 0.8);

@@ -44,6 +44,9 @@ struct FaceLayup {
   // The face's own bending stiffness D (N·mm), [meridional, circumferential]; zero in the paper's membrane
   // faces (forms/face_bending_form.hpp).
   Eigen::Vector2d bending_stiffness = Eigen::Vector2d::Zero();
+  // Its cords' bending stiffness within the face's plane (N·mm), [meridional, circumferential]: what
+  // gives a ply compressed along its cords a kink width of its own (element/line_bending.hpp).
+  Eigen::Vector2d in_plane_bending_stiffness = Eigen::Vector2d::Zero();
 };
 
 // A stretch of the meridian with one construction. Runs from the previous zone's s_end (or 0) to s_end.

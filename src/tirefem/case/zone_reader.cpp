@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <utility>
 
 #include "tirefem/case/case_reader.hpp"
 #include "tirefem/element/section.hpp"
@@ -72,7 +73,8 @@ Eigen::Matrix3d read_stiffness(TomlFields& f, const toml::node& s, const std::st
 
 FaceLayup read_face(TomlFields& f, const toml::node& n, const std::string& path,
                     const std::map<std::string, Ply>& plies, CordRubberRule default_rule) {
-  const toml::table& t = f.table(n, path, {"plies", "rubber", "stiffness", "rule", "bending_stiffness"});
+  const toml::table& t =
+      f.table(n, path, {"plies", "rubber", "stiffness", "rule", "bending_stiffness", "in_plane_bending_stiffness"});
   FaceLayup face;
   face.rule = default_rule;
   if (const toml::node* r = f.get(t, path, "rule")) face.rule = read_rule(f, *r, join(path, "rule"));
@@ -108,11 +110,14 @@ FaceLayup read_face(TomlFields& f, const toml::node& n, const std::string& path,
   }
   if (has_direct) face.direct_stiffness = direct;
   if (face.plies.empty() && !has_direct) f.fail(path, "a face needs at least one of plies, rubber or stiffness");
-  if (const toml::node* b = f.get(t, path, "bending_stiffness")) {
-    const std::string bp = join(path, "bending_stiffness");
+  for (const auto& [key, target] : {std::pair{"bending_stiffness", &face.bending_stiffness},
+                                     std::pair{"in_plane_bending_stiffness", &face.in_plane_bending_stiffness}}) {
+    const toml::node* b = f.get(t, path, key);
+    if (!b) continue;
+    const std::string bp = join(path, key);
     const std::vector<double> d = f.numbers(*b, bp, " (N·mm)");
     if (d.size() != 2) f.fail(bp, fmt::format("must be [meridional, circumferential] (got {} numbers)", d.size()));
-    face.bending_stiffness = {d[0], d[1]};
+    *target = {d[0], d[1]};
   }
   return face;
 }
@@ -204,8 +209,11 @@ void check_face(const FieldChecker& c, const FaceLayup& f, const std::string& pa
   if (f.plies.empty() && !f.direct_stiffness) c.fail(path, "a face needs at least one of plies, rubber or stiffness");
   for (std::size_t i = 0; i < f.plies.size(); ++i) check_ply(c, f.plies[i], index(join(path, "plies"), i));
   if (f.direct_stiffness) check_face_stiffness(c, *f.direct_stiffness, join(path, "stiffness"));
-  for (int i = 0; i < 2; ++i)
+  for (int i = 0; i < 2; ++i) {
     c.plausible(f.bending_stiffness[i], kFaceBendingStiffness, index(join(path, "bending_stiffness"), i));
+    c.plausible(f.in_plane_bending_stiffness[i], kFaceBendingStiffness,
+                index(join(path, "in_plane_bending_stiffness"), i));
+  }
 }
 
 void check_zones(const FieldChecker& c, const std::vector<Zone>& zones, double length, const std::string& path) {

@@ -8,6 +8,14 @@
 //   W = ½ k ρ²,   k = D · (tributary area of the node),
 // D the face's bending stiffness along the line (N·mm). W is invariant under rigid motions (d's weights
 // sum to zero, ν rotates with the face). Its gradient and Hessian are exact (closed form below).
+//
+// In-plane (geodesic) bending, for the cords of a ply: the same second difference projected on the unit
+// normal to the line within the face, m = ν × a/|a| (a = x_n − x_p along the line):
+//   κ_g = m · d = [(a·a)(b·d) − (a·b)(a·d)] / (|a| |a × b|),   b = x_q − x_m across it,
+// the curvature of the line within the surface. A cord bends in the ply's plane as it bends out of it; a
+// ply whose cords are compressed beyond what the rubber's in-plane shear holds kinks in its own plane,
+// and without this stiffness the kink has no width of its own but the mesh's
+// (docs/studies/carcass-kinking.md).
 #include <array>
 
 #include <Eigen/Dense>
@@ -21,13 +29,14 @@ struct LineBendingStencil {
   std::array<double, 3> weights{};  // w_p, w_c, w_n: d = Σ w x over the three line nodes
   double reference_curvature = 0.0;  // κ0 of the reference positions
   double stiffness = 0.0;            // k = D × tributary area, N·mm³
+  bool in_plane = false;             // the geodesic curvature κ_g instead of the normal one
 };
 
 // The weights of the second difference in arc length for reference chords h1 = |X_c − X_p| and
 // h2 = |X_n − X_c| (exact for a quadratic in arc length).
 std::array<double, 3> second_difference_weights(double h1, double h2);
 
-// κ = ν · d for node positions x (columns in LineNode order).
+// κ = ν · d (in_plane: κ_g = m · d) for node positions x (columns in LineNode order).
 double line_curvature(const LineBendingStencil& stencil, const Eigen::Matrix<double, 3, 5>& x);
 
 struct LineBendingResponse {

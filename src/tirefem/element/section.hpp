@@ -40,6 +40,10 @@ struct ElementSection {
   // (v); zero in the paper's membrane faces (forms/face_bending_form.hpp).
   Eigen::Vector2d inner_face_bending = Eigen::Vector2d::Zero();
   Eigen::Vector2d outer_face_bending = Eigen::Vector2d::Zero();
+  // Their bending stiffness within their own plane (the cords', N·mm), of the meridional and the
+  // circumferential mesh lines (element/line_bending.hpp, in-plane).
+  Eigen::Vector2d inner_face_in_plane_bending = Eigen::Vector2d::Zero();
+  Eigen::Vector2d outer_face_in_plane_bending = Eigen::Vector2d::Zero();
   // Cord families of each face softer in compression (empty: the paper's linear faces).
   std::vector<CordSoftening> inner_cords, outer_cords;
   // Rubber layers of each face under the neo-Hookean law (zero: the paper's linear faces).

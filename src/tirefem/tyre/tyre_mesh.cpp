@@ -125,6 +125,8 @@ TyreMesh build_tyre_mesh(const TyreDescription& tyre, const MeshSettings& settin
     sec.outer_face = face_stiffness(z.outer);
     sec.inner_face_bending = z.inner.bending_stiffness;
     sec.outer_face_bending = z.outer.bending_stiffness;
+    sec.inner_face_in_plane_bending = z.inner.in_plane_bending_stiffness;
+    sec.outer_face_in_plane_bending = z.outer.in_plane_bending_stiffness;
     sec.inner_cords = face_cord_softening(z.inner);
     sec.outer_cords = face_cord_softening(z.outer);
     if (tyre.rubber_law == RubberLaw::neo_hookean) {
