@@ -164,6 +164,10 @@ EDITS = [
      [("[tyre.tread]\n", "[tyre.rim_flange]\nradius = 9.5\nstiffness = 1e9\n\n[tyre.tread]\n")]),
     ("rim-flange-unknown-key", "tyre.rim_flange.radus",
      [("[tyre.tread]\n", "[tyre.rim_flange]\nradus = 9.5\nstiffness = 20.0\n\n[tyre.tread]\n")]),
+    ("face-in-plane-bending-negative", "tyre.zones[0].outer.in_plane_bending_stiffness[0]",
+     [("bending_stiffness = [100.0, 300.0]", "bending_stiffness = [100.0, 300.0], in_plane_bending_stiffness = [-5.0, 0.0]")]),
+    ("face-in-plane-bending-three-numbers", "tyre.zones[0].outer.in_plane_bending_stiffness",
+     [("bending_stiffness = [100.0, 300.0]", "bending_stiffness = [100.0, 300.0], in_plane_bending_stiffness = [5.0, 0.0, 1.0]")]),
 ]
 
 
