@@ -2,9 +2,11 @@
 // of its force and its force against finite differences of its energy (nonlinear and linear theory, with
 // and without the symmetry plane), rigid-body motions, a plate rolled into a cylinder (½ D κ² per area),
 // the half model against the full one, and the classical wrinkling load of a compressed face on an elastic
-// foundation, 2√(kD).
+// foundation, 2√(kD). The in-plane (geodesic) bending of the lines, in all of the difference, rigid-body
+// and half-model checks, and the kink load of a ply compressed along its cords, A66 + D(π/L)².
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <random>
 
@@ -216,6 +218,39 @@ TEST(FaceBending, TheHalfModelIsHalfOfTheFullOne) {
   EXPECT_LT(worst, 1e-10 * largest);
 }
 
+// Newton's equilibrium from rest of a strip under the end loads f, with `fixed` held: whether it is stable
+// (the inertia of its tangent); the caller's buckling mode must not be in it (`mode`: the outer face's
+// displacement component of that mode).
+bool straight_strip_is_stable(const ShellMesh& mesh, const std::vector<ElementSection>& sections,
+                              const std::vector<int>& fixed, const Eigen::VectorXd& f, int mode) {
+  DofMap dofs(mesh.dof_count());
+  dofs.fix(fixed);
+  std::vector<std::unique_ptr<Form>> forms;
+  forms.push_back(std::make_unique<ShellInternalForce>(mesh, sections, Kinematics::nonlinear));
+  forms.push_back(std::make_unique<FaceBendingForm>(mesh, sections, Kinematics::nonlinear, false));
+  forms.push_back(std::make_unique<NodalLoadForm>(f));
+  NonlinearProblem problem(dofs, std::move(forms));
+  Eigen::VectorXd u;
+  const bool stable = equilibrium_from_rest_is_stable(problem, u);
+  double buckled = 0.0;
+  for (int q = 0; q < mesh.pair_count(); ++q) buckled = std::max(buckled, std::abs(u[outer_dof(q, mode)]));
+  EXPECT_LT(buckled, 1e-9) << "the nearest equilibrium is the straight strip";
+  return stable;
+}
+
+// The load between a stable and an unstable straight strip, bisected from 0.8 and 1.2 × expected to
+// `precision` × expected.
+double critical_load(double expected, double precision, const std::function<bool(double)>& stable_at) {
+  double stable = 0.8 * expected, unstable = 1.2 * expected;
+  EXPECT_TRUE(stable_at(stable));
+  EXPECT_FALSE(stable_at(unstable));
+  while (unstable - stable > precision * expected) {
+    const double mid = 0.5 * (stable + unstable);
+    (stable_at(mid) ? stable : unstable) = mid;
+  }
+  return 0.5 * (stable + unstable);
+}
+
 // A face on an elastic foundation of stiffness k (the interlayer, E33 / c, over a held inner face),
 // compressed by N per unit width, wrinkles at N = 2√(kD) with the wavelength 2π(D/k)^¼ (the classical
 // beam on a Winkler foundation). Its ends are held in z: a free end on a foundation buckles first, at
@@ -231,7 +266,6 @@ bool wrinkle_free(double load, int n) {
   const std::vector<ElementSection> sections(mesh.element_count(), section);
   // Both faces carry N, so the interlayer is not sheared before the face wrinkles; the inner face is
   // held across the strip, everything is held in y (a plane problem), the outer face's ends in z.
-  DofMap dofs(mesh.dof_count());
   std::vector<int> fixed;
   for (int q = 0; q < mesh.pair_count(); ++q) {
     fixed.push_back(inner_dof(q, 1));
@@ -248,30 +282,12 @@ bool wrinkle_free(double load, int n) {
       f[6 * mesh.pair_index(n, j) + 3 * face] = -0.5 * load;
     }
   }
-  dofs.fix(fixed);
-  std::vector<std::unique_ptr<Form>> forms;
-  forms.push_back(std::make_unique<ShellInternalForce>(mesh, sections, Kinematics::nonlinear));
-  forms.push_back(std::make_unique<FaceBendingForm>(mesh, sections, Kinematics::nonlinear, false));
-  forms.push_back(std::make_unique<NodalLoadForm>(f));
-  NonlinearProblem problem(dofs, std::move(forms));
-  Eigen::VectorXd u;
-  const bool stable = equilibrium_from_rest_is_stable(problem, u);
-  double lateral = 0.0;
-  for (int q = 0; q < mesh.pair_count(); ++q) lateral = std::max(lateral, std::abs(u[outer_dof(q, 2)]));
-  EXPECT_LT(lateral, 1e-9) << "the nearest equilibrium is the straight strip";
-  return stable;
+  return straight_strip_is_stable(mesh, sections, fixed, f, 2);
 }
 
 double wrinkling_load_error(int elements) {
   const double expected = 2.0 * std::sqrt(1.0 * 100.0);  // 20 N/mm; wavelength 19.9 mm
-  double stable = 0.8 * expected, unstable = 1.2 * expected;
-  EXPECT_TRUE(wrinkle_free(stable, elements));
-  EXPECT_FALSE(wrinkle_free(unstable, elements));
-  while (unstable - stable > 2e-4 * expected) {
-    const double mid = 0.5 * (stable + unstable);
-    (wrinkle_free(mid, elements) ? stable : unstable) = mid;
-  }
-  const double fe = 0.5 * (stable + unstable);
+  const double fe = critical_load(expected, 2e-4, [&](double load) { return wrinkle_free(load, elements); });
   std::printf("  wrinkling load, %d elements: FE %.3f N/mm, 2√(kD) = %.3f N/mm (%+.2f%%)\n", elements, fe,
               expected, 100 * (fe / expected - 1));
   return fe / expected - 1.0;
@@ -305,7 +321,6 @@ bool kink_free(double load, int n, double in_plane_bending) {
   section.core_shear_modulus = 1e-9;  // no foundation for w
   section.outer_face_in_plane_bending = {in_plane_bending, 0.0};
   const std::vector<ElementSection> sections(mesh.element_count(), section);
-  DofMap dofs(mesh.dof_count());
   std::vector<int> fixed;
   for (int q = 0; q < mesh.pair_count(); ++q) {
     for (int c = 0; c < 3; ++c) fixed.push_back(inner_dof(q, c));
@@ -318,32 +333,14 @@ bool kink_free(double load, int n, double in_plane_bending) {
     f[outer_dof(mesh.pair_index(0, j), 0)] = 0.5 * load * width;
     f[outer_dof(mesh.pair_index(n, j), 0)] = -0.5 * load * width;
   }
-  dofs.fix(fixed);
-  std::vector<std::unique_ptr<Form>> forms;
-  forms.push_back(std::make_unique<ShellInternalForce>(mesh, sections, Kinematics::nonlinear));
-  forms.push_back(std::make_unique<FaceBendingForm>(mesh, sections, Kinematics::nonlinear, false));
-  forms.push_back(std::make_unique<NodalLoadForm>(f));
-  NonlinearProblem problem(dofs, std::move(forms));
-  Eigen::VectorXd u;
-  const bool stable = equilibrium_from_rest_is_stable(problem, u);
-  double across = 0.0;
-  for (int q = 0; q < mesh.pair_count(); ++q) across = std::max(across, std::abs(u[outer_dof(q, 1)]));
-  EXPECT_LT(across, 1e-9) << "the nearest equilibrium is the straight ply";
-  return stable;
+  return straight_strip_is_stable(mesh, sections, fixed, f, 1);
 }
 
 double kink_load(int n, double in_plane_bending) {
   const double length = 40.0, width = 4.0, a66 = 1.0, a11 = 3e4;
   const double euler = M_PI * M_PI * a11 * std::pow(width, 3) / (12.0 * length * length);
   const double expected = a66 / (1.0 + a66 * width / euler) + in_plane_bending * std::pow(M_PI / length, 2);
-  double stable = 0.8 * expected, unstable = 1.2 * expected;
-  EXPECT_TRUE(kink_free(stable, n, in_plane_bending));
-  EXPECT_FALSE(kink_free(unstable, n, in_plane_bending));
-  while (unstable - stable > 2e-5 * expected) {
-    const double mid = 0.5 * (stable + unstable);
-    (kink_free(mid, n, in_plane_bending) ? stable : unstable) = mid;
-  }
-  const double fe = 0.5 * (stable + unstable);
+  const double fe = critical_load(expected, 2e-5, [&](double load) { return kink_free(load, n, in_plane_bending); });
   std::printf("  kink load, D = %g N·mm, %d elements: FE %.4f N/mm, expected %.4f N/mm (%+.3f%%)\n",
               in_plane_bending, n, fe, expected, 100 * (fe / expected - 1));
   return fe / expected - 1.0;
