@@ -180,7 +180,10 @@ TEST(FaceBending, TheHalfModelIsHalfOfTheFullOne) {
   const ShellMesh full = crown_mesh(-40.0, 8), half = crown_mesh(0.0, 4);
   std::vector<ElementSection> full_sections(full.element_count()), half_sections(half.element_count());
   for (auto* sections : {&full_sections, &half_sections})
-    for (ElementSection& s : *sections) s.outer_face_bending = s.inner_face_bending = {300.0, 200.0};
+    for (ElementSection& s : *sections) {
+      s.outer_face_bending = s.inner_face_bending = {300.0, 200.0};
+      s.outer_face_in_plane_bending = s.inner_face_in_plane_bending = {150.0, 250.0};
+    }
   const FaceBendingForm full_form(full, full_sections, Kinematics::nonlinear, false);
   SingleFormProblem half_problem(half, std::make_unique<FaceBendingForm>(half, half_sections,
                                                                           Kinematics::nonlinear, true));
