@@ -312,14 +312,20 @@ TEST(FaceBending, ACompressedFaceOnAFoundationWrinklesAtTwoRootKD) {
 // Newton's residual at round-off above its tolerance): the strip (4 mm wide) could also bend as a beam,
 // and the shear mode's A66 b acts in series with its Euler load P_E = π² A11 b³/12L² (0.4% of A66 lower);
 // its shortening (5e-5) does not count. The inner face is held, the outer one loaded and held in z.
+struct PlyStrip {
+  double length = 40.0, width = 4.0;  // mm
+  double a11 = 3e4, a22 = 10.0, a66 = 1.0;  // N/mm
+};
+
 bool kink_free(double load, int n, double in_plane_bending) {
-  const double length = 40.0, width = 4.0, core = 1.0;
-  const ShellMesh mesh = plate_mesh(length, width, n, 1, 0.0, core);
+  const PlyStrip ply;
+  const double core = 1.0;
+  const ShellMesh mesh = plate_mesh(ply.length, ply.width, n, 1, 0.0, core);
   ElementSection section;
   section.outer_face = section.inner_face = MembraneStiffness::Zero();
-  section.outer_face(0, 0) = section.inner_face(0, 0) = 3e4;
-  section.outer_face(1, 1) = section.inner_face(1, 1) = 10.0;
-  section.outer_face(2, 2) = section.inner_face(2, 2) = 1.0;  // A66
+  section.outer_face(0, 0) = section.inner_face(0, 0) = ply.a11;
+  section.outer_face(1, 1) = section.inner_face(1, 1) = ply.a22;
+  section.outer_face(2, 2) = section.inner_face(2, 2) = ply.a66;
   section.core_normal_modulus = 10.0;
   section.core_shear_modulus = 1e-9;  // no foundation for w
   section.outer_face_in_plane_bending = {in_plane_bending, 0.0};
@@ -333,16 +339,17 @@ bool kink_free(double load, int n, double in_plane_bending) {
   for (int j = 0; j <= 1; ++j) {
     fixed.push_back(outer_dof(mesh.pair_index(n / 2, j), 0));
     for (int end : {0, n}) fixed.push_back(outer_dof(mesh.pair_index(end, j), 1));
-    f[outer_dof(mesh.pair_index(0, j), 0)] = 0.5 * load * width;
-    f[outer_dof(mesh.pair_index(n, j), 0)] = -0.5 * load * width;
+    f[outer_dof(mesh.pair_index(0, j), 0)] = 0.5 * load * ply.width;
+    f[outer_dof(mesh.pair_index(n, j), 0)] = -0.5 * load * ply.width;
   }
   return straight_strip_is_stable(mesh, sections, fixed, f, 1);
 }
 
 double kink_load(int n, double in_plane_bending) {
-  const double length = 40.0, width = 4.0, a66 = 1.0, a11 = 3e4;
-  const double euler = M_PI * M_PI * a11 * std::pow(width, 3) / (12.0 * length * length);
-  const double expected = a66 / (1.0 + a66 * width / euler) + in_plane_bending * std::pow(M_PI / length, 2);
+  const PlyStrip ply;
+  const double euler = M_PI * M_PI * ply.a11 * std::pow(ply.width, 3) / (12.0 * ply.length * ply.length);
+  const double expected =
+      ply.a66 / (1.0 + ply.a66 * ply.width / euler) + in_plane_bending * std::pow(M_PI / ply.length, 2);
   const double fe = critical_load(expected, 2e-5, [&](double load) { return kink_free(load, n, in_plane_bending); });
   std::printf("  kink load, D = %g N·mm, %d elements: FE %.4f N/mm, expected %.4f N/mm (%+.3f%%)\n",
               in_plane_bending, n, fe, expected, 100 * (fe / expected - 1));

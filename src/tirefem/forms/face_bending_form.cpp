@@ -2,6 +2,7 @@
 
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 namespace tirefem {
 
@@ -73,64 +74,66 @@ FaceBendingForm::FaceBendingForm(const ShellMesh& mesh, const std::vector<Elemen
   if (symmetric_u_min && clamped_u_edges.u_min)
     throw std::invalid_argument("face bending: the u_min edge is either the symmetry plane or clamped");
   const Grid grid{mesh, symmetric_u_min};
-  for (bool in_plane : {false, true})
-    for (Face f : {Face::inner, Face::outer})
-      for (int j = 0; j < mesh.v_nodes(); ++j)
-        for (int i = 0; i < mesh.u_nodes(); ++i)
-          for (Direction d : {Direction::u, Direction::v}) {
-            const double stiffness = grid.stiffness(sections, i, j, f, d, in_plane);
-            if (!(stiffness > 0.0)) continue;
-            const int di = d == Direction::u ? 1 : 0, dj = 1 - di;
-            std::array<GridNode, 5> nodes;
-            nodes[line_before] = grid.node(i - di, j - dj);
-            nodes[line_centre] = grid.node(i, j);
-            nodes[line_after] = grid.node(i + di, j + dj);
-            // At a clamped edge the missing node is the mirror image of the first one inside (set below);
-            // at any other edge the line is a hinge there.
-            const bool clamped = d == Direction::u && ((i == 0 && clamped_u_edges.u_min) ||
-                                                       (i == mesh.u_nodes() - 1 && clamped_u_edges.u_max));
-            const int beyond = !nodes[line_before].valid() ? line_before : line_after;
-            const int inside = beyond == line_before ? line_after : line_before;
-            if (!nodes[line_before].valid() || !nodes[line_after].valid()) {
-              if (!clamped || !nodes[inside].valid()) continue;
-              nodes[beyond] = nodes[line_centre];
-            }
-            nodes[across_before] = grid.node(i - dj, j - di);
-            nodes[across_after] = grid.node(i + dj, j + di);
-            for (int k : {across_before, across_after})
-              if (!nodes[k].valid()) nodes[k] = nodes[line_centre];  // one-sided across an edge
+  // The stencil of one line (face f, direction d, normal or in-plane bending) at node (i, j), if it bends.
+  const auto add_stencil = [&](int i, int j, Face f, Direction d, bool in_plane) {
+    const double stiffness = grid.stiffness(sections, i, j, f, d, in_plane);
+    if (!(stiffness > 0.0)) return;
+    const int di = d == Direction::u ? 1 : 0, dj = 1 - di;
+    std::array<GridNode, 5> nodes;
+    nodes[line_before] = grid.node(i - di, j - dj);
+    nodes[line_centre] = grid.node(i, j);
+    nodes[line_after] = grid.node(i + di, j + dj);
+    // At a clamped edge the missing node is the mirror image of the first one inside (set below);
+    // at any other edge the line is a hinge there.
+    const bool clamped = d == Direction::u && ((i == 0 && clamped_u_edges.u_min) ||
+                                               (i == mesh.u_nodes() - 1 && clamped_u_edges.u_max));
+    const int beyond = !nodes[line_before].valid() ? line_before : line_after;
+    const int inside = beyond == line_before ? line_after : line_before;
+    if (!nodes[line_before].valid() || !nodes[line_after].valid()) {
+      if (!clamped || !nodes[inside].valid()) return;
+      nodes[beyond] = nodes[line_centre];
+    }
+    nodes[across_before] = grid.node(i - dj, j - di);
+    nodes[across_after] = grid.node(i + dj, j + di);
+    for (int k : {across_before, across_after})
+      if (!nodes[k].valid()) nodes[k] = nodes[line_centre];  // one-sided across an edge
 
-            Stencil s;
-            const Eigen::Vector3d centre = grid.position(nodes[line_centre], f);
-            for (int k = 0; k < 5; ++k) {
-              s.reference.col(k) = grid.position(nodes[k], f) - centre;
-              for (int c = 0; c < 3; ++c) {
-                s.dofs[3 * k + c] = f == Face::inner ? inner_dof(nodes[k].pair, c) : outer_dof(nodes[k].pair, c);
-                s.signs[3 * k + c] = nodes[k].mirrored && c == 0 ? -1.0 : 1.0;
-              }
-            }
-            s.clamped = clamped;  // (past the test above, a clamped node lacks its node beyond)
-            if (clamped) {
-              // x_g − x_e = Q (x_1 − x_e), t along the edge element's reference chord: in the reference,
-              // X_g − X_e = −(X_1 − X_e) (no reference curvature at the edge).
-              s.reference.col(beyond) = -s.reference.col(inside);
-              const Eigen::Vector3d t = s.reference.col(inside).normalized();
-              const Eigen::Matrix3d q = Eigen::Matrix3d::Identity() - 2.0 * t * t.transpose();
-              s.transform.setIdentity();
-              s.transform.block<3, 3>(3 * beyond, 3 * beyond) = Eigen::Matrix3d::Identity() - q;
-              s.transform.block<3, 3>(3 * beyond, 3 * inside) = q;
-            }
-            const double h1 = s.reference.col(line_before).norm(), h2 = s.reference.col(line_after).norm();
-            const double across = 0.5 * (s.reference.col(across_before).norm() + s.reference.col(across_after).norm());
-            // A node on the symmetry plane carries half of its full-model energy.
-            // So does a clamped edge node (half of the two elements' length is its own).
-            const double share = (symmetric_u_min && i == 0) || clamped ? 0.5 : 1.0;
-            s.bending.weights = second_difference_weights(h1, h2);
-            s.bending.in_plane = in_plane;
-            s.bending.reference_curvature = line_curvature(s.bending, s.reference);
-            s.bending.stiffness = share * stiffness * 0.5 * (h1 + h2) * across;
-            stencils_.push_back(s);
-          }
+    Stencil s;
+    const Eigen::Vector3d centre = grid.position(nodes[line_centre], f);
+    for (int k = 0; k < 5; ++k) {
+      s.reference.col(k) = grid.position(nodes[k], f) - centre;
+      for (int c = 0; c < 3; ++c) {
+        s.dofs[3 * k + c] = f == Face::inner ? inner_dof(nodes[k].pair, c) : outer_dof(nodes[k].pair, c);
+        s.signs[3 * k + c] = nodes[k].mirrored && c == 0 ? -1.0 : 1.0;
+      }
+    }
+    s.clamped = clamped;  // (past the test above, a clamped node lacks its node beyond)
+    if (clamped) {
+      // x_g − x_e = Q (x_1 − x_e), t along the edge element's reference chord: in the reference,
+      // X_g − X_e = −(X_1 − X_e) (no reference curvature at the edge).
+      s.reference.col(beyond) = -s.reference.col(inside);
+      const Eigen::Vector3d t = s.reference.col(inside).normalized();
+      const Eigen::Matrix3d q = Eigen::Matrix3d::Identity() - 2.0 * t * t.transpose();
+      s.transform.setIdentity();
+      s.transform.block<3, 3>(3 * beyond, 3 * beyond) = Eigen::Matrix3d::Identity() - q;
+      s.transform.block<3, 3>(3 * beyond, 3 * inside) = q;
+    }
+    const double h1 = s.reference.col(line_before).norm(), h2 = s.reference.col(line_after).norm();
+    const double across = 0.5 * (s.reference.col(across_before).norm() + s.reference.col(across_after).norm());
+    // A node on the symmetry plane carries half of its full-model energy.
+    // So does a clamped edge node (half of the two elements' length is its own).
+    const double share = (symmetric_u_min && i == 0) || clamped ? 0.5 : 1.0;
+    s.bending.weights = second_difference_weights(h1, h2);
+    s.bending.in_plane = in_plane;
+    s.bending.reference_curvature = line_curvature(s.bending, s.reference);
+    s.bending.stiffness = share * stiffness * 0.5 * (h1 + h2) * across;
+    stencils_.push_back(s);
+  };
+  for (const auto& [in_plane, f] : {std::pair{false, Face::inner}, std::pair{false, Face::outer},
+                                    std::pair{true, Face::inner}, std::pair{true, Face::outer}})
+    for (int j = 0; j < mesh.v_nodes(); ++j)
+      for (int i = 0; i < mesh.u_nodes(); ++i)
+        for (Direction d : {Direction::u, Direction::v}) add_stencil(i, j, f, d, in_plane);
 }
 
 void FaceBendingForm::add_pattern(PatternBuilder& pattern) const {
