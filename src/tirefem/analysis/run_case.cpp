@@ -17,6 +17,7 @@
 #include "tirefem/analysis/footprint.hpp"
 #include "tirefem/analysis/inflation.hpp"
 #include "tirefem/analysis/parallel_chains.hpp"
+#include "tirefem/analysis/phase_times.hpp"
 #include "tirefem/analysis/rolling.hpp"
 #include "tirefem/analysis/shared_states.hpp"
 #include "tirefem/analysis/study_reports.hpp"
@@ -25,23 +26,11 @@
 #include "tirefem/io/json_summary.hpp"
 #include "tirefem/io/results_folder.hpp"
 #include "tirefem/results/footprint_report.hpp"
-#include "tirefem/results/inflation_report.hpp"
-#include "tirefem/results/rim_flange_report.hpp"
 #include "tirefem/results/rolling_report.hpp"
 #include "tirefem/solver/blas_kernel.hpp"
 
 namespace tirefem {
 namespace {
-
-toml::table counters_table(const SolveCounters& c) {
-  return toml::table{{"load_steps", c.load_steps},
-                     {"cutbacks", c.cutbacks},
-                     {"newton_iterations", c.newton_iterations},
-                     {"factorizations", c.factorizations},
-                     {"assembly_time_s", c.assembly_s},
-                     {"factorization_time_s", c.factorization_s},
-                     {"time_s", c.wall_s}};
-}
 
 toml::table blas_table() {
   const BlasKernel b = blas_kernel();
@@ -51,47 +40,6 @@ toml::table blas_table() {
 void report(const ProgressSink& progress, const std::string& message) {
   if (progress) progress(message);
 }
-
-void add_krylov(toml::table& t, const SolveCounters& c) {
-  t.insert("reused_factorizations", c.krylov_solves);
-  t.insert("krylov_iterations", c.krylov_iterations);
-}
-
-// Wall time per phase of the run, printed at the end and kept in summary.json. A shared inflation is a
-// phase of its own, taken out of the study during which it was solved.
-class PhaseTimes {
- public:
-  using Clock = std::chrono::steady_clock;
-  void begin(std::string name) {
-    name_ = std::move(name);
-    start_ = Clock::now();
-    nested_ = 0.0;
-  }
-  void end() { phases_.emplace_back(name_, seconds(start_) - nested_); }
-  void add(std::string name, double s) { phases_.emplace_back(std::move(name), s); }
-  void nested(std::string name, double s) {
-    phases_.emplace_back(std::move(name), s);
-    nested_ += s;
-  }
-  void report(const ProgressSink& progress, double total) const {
-    if (!progress) return;
-    progress("time per phase:");
-    for (const auto& [name, s] : phases_) progress(fmt::format("  {:<40} {:9.2f} s", name, s));
-    progress(fmt::format("  {:<40} {:9.2f} s", "total", total));
-  }
-  toml::array table() const {
-    toml::array a;
-    for (const auto& [name, s] : phases_) a.push_back(toml::table{{"phase", name}, {"time_s", s}});
-    return a;
-  }
-
- private:
-  static double seconds(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-  std::string name_;
-  Clock::time_point start_;
-  double nested_ = 0.0;
-  std::vector<std::pair<std::string, double>> phases_;
-};
 
 std::string incomplete_message(const StaticContactResult& r) {
   return fmt::format("'{}' stopped at δz = {:.3g} mm: {}", r.name, r.final_state.deflection_mm, r.failure);
@@ -177,42 +125,7 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     const InflationResult r = run_inflation(tm, c.inflation, progress);
     if (!r.converged) throw std::runtime_error(r.failure);
     if (r.kinematics == Kinematics::nonlinear) tyres.adopt(c.mesh, r);  // the contact studies start here
-    const auto elements = evaluate_element_results(tm, c.tyre, r.displacement, r.kinematics);
-    const InflationSummary s = summarize_inflation(tm, r.displacement, elements);
-    const CsvTable table = meridian_table(tm, c.tyre, r.displacement, elements);
-    write_csv(folder.path("inflation_meridian.csv"), table);
-    write_vtu(folder.path("inflation.vtu"), shell_vtu(tm, c.tyre, r.displacement, elements));
-    inflation_plots.attempt("inflation plots", [&] {
-      for (const auto& [name, plot] : meridian_plots(table, tm, r.displacement))
-        inflation_plots.plot("inflation_" + name, plot);
-    });
-    toml::table inflation{{"pressure_MPa", c.inflation.pressure},
-                          {"theory", c.inflation.linear ? "linear" : "nonlinear"},
-                          {"converged", r.converged},
-                          {"crown_radius_growth_mm", s.crown_radius_growth_mm},
-                          {"section_width_growth_mm", s.section_width_growth_mm},
-                          {"max_carcass_cord_force_N", s.max_carcass_cord_force_N},
-                          {"max_belt_cord_force_N", s.max_belt_cord_force_N},
-                          {"max_carcass_cord_strain", s.max_carcass_cord_strain},
-                          {"max_belt_cord_strain", s.max_belt_cord_strain},
-                          {"newton_iterations", r.counters.newton_iterations}};
-    if (!s.rim_flanges.empty()) {
-      toml::array flanges;
-      for (const RimFlangeLoad& l : s.rim_flanges) flanges.push_back(rim_flange_table(rim_flange_side(l, tm.half_model, false), l));
-      inflation.insert("rim_flanges", std::move(flanges));
-    }
-    inflation.insert("solver", counters_table(r.counters));
-    summary.insert("inflation", std::move(inflation));
-    report(progress,
-           fmt::format("inflation: crown radius +{:.3f} mm, section width {:+.3f} mm, max cord force "
-                       "carcass {:.2f} N, belt {:.2f} N ({} Newton iterations, {:.2f} s)",
-                       s.crown_radius_growth_mm, s.section_width_growth_mm, s.max_carcass_cord_force_N,
-                       s.max_belt_cord_force_N, r.counters.newton_iterations, r.counters.wall_s));
-    for (const RimFlangeLoad& l : s.rim_flanges)
-      report(progress, fmt::format("  rim flange ({}): axial push {:.0f} N, peak pressure {:.3f} MPa, in contact "
-                                   "over {:.0f}% of the round",
-                                   rim_flange_side(l, tm.half_model, false), l.axial_force_N, l.peak_pressure_MPa,
-                                   100 * l.contact_fraction));
+    summary.insert("inflation", write_inflation(folder, inflation_plots, progress, tm, c, r));
     times.end();
   }
 

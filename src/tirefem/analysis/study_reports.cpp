@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "tirefem/io/csv_writer.hpp"
+#include "tirefem/results/rim_flange_report.hpp"
 #include "tirefem/io/vtu_writer.hpp"
 #include "tirefem/results/footprint_report.hpp"
 #include "tirefem/results/inflation_report.hpp"
@@ -129,6 +130,62 @@ toml::table report_tyre_test(const ResultsFolder& folder, ReportWriter& plots, c
     plots.plot(t.name + "_vertical", tyre_test_vertical_plot(t, f));
   });
   return tyre_test_summary(t, f);
+}
+
+toml::table write_inflation(const ResultsFolder& folder, ReportWriter& plots, const ProgressSink& progress,
+                            const TyreMesh& tm, const Case& c, const InflationResult& r) {
+  const auto elements = evaluate_element_results(tm, c.tyre, r.displacement, r.kinematics);
+  const InflationSummary s = summarize_inflation(tm, r.displacement, elements);
+  const CsvTable table = meridian_table(tm, c.tyre, r.displacement, elements);
+  write_csv(folder.path("inflation_meridian.csv"), table);
+  write_vtu(folder.path("inflation.vtu"), shell_vtu(tm, c.tyre, r.displacement, elements));
+  plots.attempt("inflation plots", [&] {
+    for (const auto& [name, plot] : meridian_plots(table, tm, r.displacement))
+      plots.plot("inflation_" + name, plot);
+  });
+  toml::table inflation{{"pressure_MPa", c.inflation.pressure},
+                        {"theory", c.inflation.linear ? "linear" : "nonlinear"},
+                        {"converged", r.converged},
+                        {"crown_radius_growth_mm", s.crown_radius_growth_mm},
+                        {"section_width_growth_mm", s.section_width_growth_mm},
+                        {"max_carcass_cord_force_N", s.max_carcass_cord_force_N},
+                        {"max_belt_cord_force_N", s.max_belt_cord_force_N},
+                        {"max_carcass_cord_strain", s.max_carcass_cord_strain},
+                        {"max_belt_cord_strain", s.max_belt_cord_strain},
+                        {"newton_iterations", r.counters.newton_iterations}};
+  if (!s.rim_flanges.empty()) {
+    toml::array flanges;
+    for (const RimFlangeLoad& l : s.rim_flanges)
+      flanges.push_back(rim_flange_table(rim_flange_side(l, tm.half_model, false), l));
+    inflation.insert("rim_flanges", std::move(flanges));
+  }
+  inflation.insert("solver", counters_table(r.counters));
+  if (!progress) return inflation;
+  progress(fmt::format("inflation: crown radius +{:.3f} mm, section width {:+.3f} mm, max cord force carcass "
+                       "{:.2f} N, belt {:.2f} N ({} Newton iterations, {:.2f} s)",
+                       s.crown_radius_growth_mm, s.section_width_growth_mm, s.max_carcass_cord_force_N,
+                       s.max_belt_cord_force_N, r.counters.newton_iterations, r.counters.wall_s));
+  for (const RimFlangeLoad& l : s.rim_flanges)
+    progress(fmt::format("  rim flange ({}): axial push {:.0f} N, peak pressure {:.3f} MPa, in contact over "
+                         "{:.0f}% of the round",
+                         rim_flange_side(l, tm.half_model, false), l.axial_force_N, l.peak_pressure_MPa,
+                         100 * l.contact_fraction));
+  return inflation;
+}
+
+toml::table counters_table(const SolveCounters& c) {
+  return toml::table{{"load_steps", c.load_steps},
+                     {"cutbacks", c.cutbacks},
+                     {"newton_iterations", c.newton_iterations},
+                     {"factorizations", c.factorizations},
+                     {"assembly_time_s", c.assembly_s},
+                     {"factorization_time_s", c.factorization_s},
+                     {"time_s", c.wall_s}};
+}
+
+void add_krylov(toml::table& t, const SolveCounters& c) {
+  t.insert("reused_factorizations", c.krylov_solves);
+  t.insert("krylov_iterations", c.krylov_iterations);
 }
 
 }  // namespace tirefem

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "tirefem/analysis/footprint.hpp"
+#include "tirefem/analysis/inflation.hpp"
 #include "tirefem/analysis/rolling.hpp"
 #include "tirefem/analysis/tyre_test.hpp"
 #include "tirefem/analysis/tyre_test_fit.hpp"
@@ -65,5 +66,14 @@ void write_rolling(const ResultsFolder& folder, ReportWriter& plots, const TyreM
 // fit or a report that cannot be made is skipped with a note.
 toml::table report_tyre_test(const ResultsFolder& folder, ReportWriter& plots, const ProgressSink& progress,
                              const Case& c, const TyreTestResult& t);
+
+// The inflated state: inflation_meridian.csv, inflation.vtu and the meridian plots; progress: its figures
+// and the rim flanges' loads. Returns its summary.json entry.
+toml::table write_inflation(const ResultsFolder& folder, ReportWriter& plots, const ProgressSink& progress,
+                            const TyreMesh& tm, const Case& c, const InflationResult& r);
+
+// A solve's counters as summary.json keeps them ("solver" of each study); add_krylov adds the GMRES ones.
+toml::table counters_table(const SolveCounters& c);
+void add_krylov(toml::table& t, const SolveCounters& c);
 
 }  // namespace tirefem
