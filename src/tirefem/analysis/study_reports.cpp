@@ -5,11 +5,11 @@
 #include <fmt/format.h>
 
 #include "tirefem/io/csv_writer.hpp"
-#include "tirefem/results/rim_flange_report.hpp"
 #include "tirefem/io/vtu_writer.hpp"
 #include "tirefem/results/footprint_report.hpp"
 #include "tirefem/results/inflation_report.hpp"
 #include "tirefem/results/cornering_report.hpp"
+#include "tirefem/results/rim_flange_report.hpp"
 #include "tirefem/results/rolling_report.hpp"
 #include "tirefem/results/shell_results.hpp"
 #include "tirefem/magic_formula/tir_writer.hpp"
