@@ -1,10 +1,13 @@
 // The studies-side-by-side scheduler: how threads are shared out, that every task runs once and the
 // tasks of a chain in order, that a failing task stops the others and reaches the caller, and that the last
 // worker running takes the threads of the others.
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -42,6 +45,66 @@ TEST(ParallelChains, EveryTaskRunsOnceAndAChainInOrder) {
     for (int c = 0; c < 4; ++c) EXPECT_EQ(seen[c], (std::vector<int>{0, 1, 2})) << workers << " workers, chain " << c;
     EXPECT_FALSE(stop);
   }
+}
+
+// A chain that waits for the first task of an earlier one starts only once that task has run, whatever the
+// number of workers; a worker with nothing startable waits rather than leaving chains behind.
+TEST(ParallelChains, AChainWaitsForTheTasksItStartsAfter) {
+  for (int workers : {1, 2, 3}) {
+    std::mutex m;
+    std::vector<std::string> order;
+    const auto note = [&](std::string what) {
+      const std::lock_guard lock(m);
+      order.push_back(std::move(what));
+    };
+    std::vector<TaskChain> chains(3);
+    chains[0] = {[&] {
+                   std::this_thread::sleep_for(std::chrono::milliseconds(30));
+                   note("start");
+                 },
+                 [&] { note("first series"); }};
+    chains[1] = {[&] { note("second series"); }};
+    chains[2] = {[&] { note("other"); }};
+    std::vector<std::optional<ChainStart>> starts(3);
+    starts[1] = ChainStart{0, 1};
+    std::atomic<bool> stop{false};
+    run_chains(chains, {workers, 1}, stop, nullptr, starts);
+    ASSERT_EQ(order.size(), 4u) << workers << " workers";
+    const auto at = [&](const std::string& s) { return std::find(order.begin(), order.end(), s) - order.begin(); };
+    EXPECT_LT(at("start"), at("second series")) << workers << " workers";
+    EXPECT_LT(at("start"), at("first series")) << workers << " workers";
+    if (workers >= 2) EXPECT_LT(at("other"), at("start")) << "the free worker runs the startable chain meanwhile";
+  }
+  // With hold_later the waiting chain keeps the free worker for itself: "other" runs after it.
+  {
+    std::mutex m;
+    std::vector<std::string> order;
+    const auto note = [&](std::string what) {
+      const std::lock_guard lock(m);
+      order.push_back(std::move(what));
+    };
+    std::vector<TaskChain> chains(3);
+    chains[0] = {[&] {
+                   std::this_thread::sleep_for(std::chrono::milliseconds(30));
+                   note("start");
+                 },
+                 [&] {
+                   std::this_thread::sleep_for(std::chrono::milliseconds(30));
+                   note("first series");
+                 }};
+    chains[1] = {[&] { note("second series"); }};
+    chains[2] = {[&] { note("other"); }};
+    std::vector<std::optional<ChainStart>> starts(3);
+    starts[1] = ChainStart{0, 1, true};
+    std::atomic<bool> stop{false};
+    run_chains(chains, {2, 1}, stop, nullptr, starts);
+    EXPECT_EQ(order, (std::vector<std::string>{"start", "second series", "other", "first series"}));
+  }
+  std::vector<TaskChain> chains(2, TaskChain{[] {}});
+  std::vector<std::optional<ChainStart>> backwards(2);
+  backwards[0] = ChainStart{1, 1};
+  std::atomic<bool> stop{false};
+  EXPECT_THROW(run_chains(chains, {2, 1}, stop, nullptr, backwards), std::invalid_argument);
 }
 
 TEST(ParallelChains, AFailingTaskStopsTheRunAndIsRethrown) {

@@ -141,17 +141,47 @@ struct RollingResult {
   SolveCounters counters;                             // rolling phase (after the footprint)
 };
 
+// A converged rolling state as later states start from it: its parameters (RollingModel's: axle height /
+// Rk, tan α, γ, δz / axle height) and its displacement.
+struct RollingStartState {
+  Eigen::Vector4d parameters = Eigen::Vector4d::Zero();
+  Eigen::VectorXd u;
+};
+
+// Where the rolling studies at one load on one mesh and support begin: the static footprint and free
+// rolling straight ahead, solved once (solve_rolling_start) and shared by every study that begins there (a
+// tyre test's two series at a load), which then solve neither. Valid for studies with the same friction
+// and travel (`friction`, `reverse`).
+struct RollingStart {
+  StaticContactResult footprint;   // completed or not
+  RollingStateResult free;         // free rolling (converged or not), with the counts of its solves
+  std::optional<double> effective_rolling_radius_mm, slip_stiffness_N;
+  std::vector<RollingStartState> states;  // every state free rolling converged to, in order
+  double friction = 0.0;
+  bool reverse = false;
+};
+
+// The footprint (as run_rolling finds it: `footprint` if given and completed, else solved) and free rolling
+// of `study`.
+RollingStart solve_rolling_start(const TyreMesh& tyre_mesh, const TyreDescription& tyre,
+                                 const InflationSettings& inflation, const ContactSettings& contact,
+                                 const RollingStudy& study, const ProgressSink& progress = {},
+                                 const InflationResult* inflated = nullptr,
+                                 const StaticContactResult* footprint = nullptr);
+
 // From `inflated` when given (see run_footprint), else from its own inflation. `footprint`, when given, is
 // the completed static footprint of this mesh on the study's support at its target load (shared by the
 // studies at that load); else the study solves its own (from `nearby`, when given: see run_footprint).
 // `point_done` is called once per state and sweep point as it is finished (solved, failed or skipped), e.g.
 // to estimate the time left.
+// `start`, when given, is where the study begins (its friction and travel the study's): its footprint and
+// free rolling, not solved again (the study's counters leave out their work; its free state keeps its counts).
 RollingResult run_rolling(const TyreMesh& tyre_mesh, const TyreDescription& tyre, const InflationSettings& inflation,
                           const ContactSettings& contact, const RollingStudy& study, const ProgressSink& progress = {},
                           const InflationResult* inflated = nullptr,
                           const StaticContactResult* footprint = nullptr,
                           const std::function<void()>& point_done = {},
-                          const std::vector<PathState>* nearby = nullptr);
+                          const std::vector<PathState>* nearby = nullptr, const RollingStart* start = nullptr);
 
 // The `points` values of a sweep over [from, to] (SweepSpacing): evenly spaced, or each side of zero
 // quadratically denser towards it (v = end·(t/end)² for t evenly spaced; from < 0 < to keeps 0 if even).

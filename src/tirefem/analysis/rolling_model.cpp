@@ -16,7 +16,13 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 constexpr double kAngleStep = 0.02;  // largest first step in tan α (1.15°) and in γ (rad)
-constexpr double kRateReach = 0.05;  // see hold_load
+// hold_load's du/dδz: ∂R/∂δz by central differences over ±kRateStep (mm), solved to kRateTolerance. At a
+// fixed u the residual is smooth in δz only on a scale far below the gaps of neighbouring tread points
+// (the patch entry between two points moves with δz): measured on the 40 × 12 full model, a step of 1e-2
+// gave dQz/dδz 12% low and 1e-1 2.7 times too high; 1e-4 and 1e-5 agree with converged states 0.01 mm
+// apart (RollingDeflectionRate.*).
+constexpr double kRateStep = 1e-5;
+constexpr double kRateTolerance = 1e-6;
 constexpr int kEasyIterations = 6;   // a step that converged within this many Newton iterations doubles
 constexpr double kJacobianSmoothing = 0.1;  // TreadFrictionForm::set_jacobian_smoothing, see below
 constexpr double kDegree = 3.14159265358979323846 / 180.0;
@@ -251,24 +257,55 @@ RollingModel::Attempt RollingModel::continuation(const FrictionLaw& law, const P
   return a;
 }
 
+bool RollingModel::deflection_rate(const Eigen::VectorXd& u, Eigen::VectorXd& rate, double& stiffness) {
+  const DofMap& dofs = problem_->dofs();
+  const double d = deflection_, h = kRateStep;
+  // The tangent at u, the friction's exact one (not Newton's smoothed blend): a derivative of the solution.
+  const double smoothing = friction_->jacobian_smoothing();
+  friction_->set_jacobian_smoothing(0.0);
+  problem_->evaluate(u, 1.0, true);
+  friction_->set_jacobian_smoothing(smoothing);
+  const auto residual_at = [&](double dz) {
+    set_deflection(dz);
+    problem_->evaluate(u, 1.0, false);  // the tangent assembled at u stays
+    return Eigen::VectorXd(dofs.gather(problem_->system().residual()));
+  };
+  const Eigen::VectorXd dr = (residual_at(d + h) - residual_at(d - h)) / (2.0 * h);
+  set_deflection(d);
+  Eigen::VectorXd v;
+  if (!newton_->solve_with_tangent(-dr, v, kRateTolerance)) return false;
+  rate = Eigen::VectorXd::Zero(u.size());
+  dofs.scatter_add(v, rate);
+  set_deflection(d + h);
+  const double above = figures(u + h * rate).Qz_N;
+  set_deflection(d - h);
+  const double below = figures(u - h * rate).Qz_N;
+  set_deflection(d);
+  stiffness = (above - below) / (2.0 * h);
+  return std::isfinite(stiffness) && stiffness > 0.0;
+}
+
 void RollingModel::hold_load(Solved& s, double target, double tolerance, double stiffness) {
   const auto t0 = Clock::now();
   const int factorizations0 = newton_->linear_stats().factorizations;
   const int newton0 = newton_->total_iterations();
   double d0 = deflection_, q0 = s.figures.Qz_N, slope = stiffness;
   int cutbacks = 0, steps = 0;
+  // du/dδz at the state each δz step starts from, and dQz/dδz along it: the step to the target load and
+  // the prediction of the state there (without it the patch's newly touching edge starts the solve far
+  // off). Empty where that solve failed: then the static stiffness and the secant of the steps serve.
+  Eigen::VectorXd rate;
   while (steps < 8 && s.converged && std::abs(q0 - target) > tolerance * target) {
+    // (At each state a step starts from; a cut-back keeps the rate.)
+    if (cutbacks == 0) {
+      double k = 0.0;
+      if (deflection_rate(s.u, rate, k)) slope = k;
+      else rate.resize(0);
+    }
     const double d1 = d0 + (target - q0) / slope * std::pow(0.5, cutbacks);
     set_deflection(d1);
-    // Predicted along du/dδz of the last δz step, if it was held at a state within kRateReach in
-    // (R/Rk, tan α, γ), R the axle height: without it the patch's newly touching edge starts the solve
-    // far off. Measured on the 80 × 24 full model, α sweep 0 … 12° at 3700 N held: its δz steps took 81
-    // Newton iterations (30 at 4° alone) against 38, the sweep 200 against 117 (99 s against 51 s), the
-    // forces within 0.7% (the friction problem's states are path-dependent at that level).
     Eigen::VectorXd u = s.u;
-    if (deflection_rate_.size() == u.size() &&
-        (deflection_rate_at_.head<3>() - s.parameters.head<3>()).norm() <= kRateReach)
-      u += (d1 - d0) * deflection_rate_;
+    if (rate.size() == u.size()) u += (d1 - d0) * rate;
     const ContactSolveOutcome o = solve_rolling_state(*newton_, *contact_, *friction_, u, settings_);
     ++s.counts.solves;
     if (!o.converged) {
@@ -284,8 +321,6 @@ void RollingModel::hold_load(Solved& s, double target, double tolerance, double 
     }
     cutbacks = 0;
     ++steps;
-    deflection_rate_ = (u - s.u) / (d1 - d0);
-    deflection_rate_at_ = s.parameters;
     s.u = std::move(u);
     s.figures = figures(s.u);
     if (progress_ && s.counts.time_s + seconds_since(t0) >= kQuietSeconds)

@@ -10,6 +10,7 @@
 // travels in +y); camber tilts the road plane (road/cambered_plane.hpp).
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tirefem/analysis/rolling.hpp"
@@ -44,16 +45,25 @@ class RollingModel {
   // friction force at once is tried first.
   // `from_last`: continue from the state converged last instead of the nearest one.
   Solved solve(const FrictionLaw& law, const WheelSlip& slip, bool from_last = false);
-  // Holds Qz at `target` by moving the support (δz): secant steps from `stiffness` (dQz/dδz), each a
-  // rolling solve from the last state, until |Qz − target| ≤ tolerance · target. Leaves the model at the
-  // new deflection.
+  // Holds Qz at `target` by moving the support (δz): Newton steps in δz, each a rolling solve from the
+  // last state predicted along its du/dδz (deflection_rate), until |Qz − target| ≤ tolerance · target;
+  // `stiffness` (dQz/dδz) and then secants serve where du/dδz is not found. Leaves the model at the new
+  // deflection.
   void hold_load(Solved& s, double target, double tolerance, double stiffness);
   void set_deflection(double deflection);
   double deflection() const { return deflection_; }
   RollingFigures figures(const Eigen::VectorXd& u) const;
   // Qy of a full-stick plan at the static state for Rk (no solve): affine in Rk, it estimates Re.
   double static_full_stick_Qy(double rolling_radius);
+  // du/dδz at the converged state u (at the model's δz and slip): K du/dδz = −∂R/∂δz with the exact
+  // tangent at u (one assembly, one linear solve), and dQz/dδz along it. False when the solve fails or the
+  // stiffness is not positive. Leaves δz as it was.
+  bool deflection_rate(const Eigen::VectorXd& u, Eigen::VectorXd& rate, double& stiffness);
   void fill(RollingStateResult& state, const Solved& s) const;
+  // The converged Coulomb states later states start from (RollingStart::states), and the adoption of
+  // such states solved by another model of the same study's tyre, mesh and support (at the same δz).
+  const std::vector<RollingStartState>& converged_states() const { return known_; }
+  void adopt(const std::vector<RollingStartState>& states) { known_.insert(known_.end(), states.begin(), states.end()); }
   void finish(SolveCounters& c) const;
   // A state that takes long (more than kQuietSeconds) reports each further stage of its continuation
   // and each δz step of hold_load here.
@@ -64,10 +74,7 @@ class RollingModel {
   // scales. The deflection is one of them because states held at a load (hold_load) lie at other δz: a
   // secant through states at two deflections, read as if at one, predicts badly.
   using Parameters = Eigen::Vector4d;
-  struct Known {
-    Parameters parameters;
-    Eigen::VectorXd u;
-  };
+  using Known = RollingStartState;
   Parameters parameters(const WheelSlip& slip) const;
   // One continuation to `target` from known_[from_index] (−1: the static footprint), in stages with
   // halving cut-back, within ContactSettings::max_state_iterations; counts its nonlinear solves.
@@ -78,6 +85,7 @@ class RollingModel {
     ContactSolveOutcome last;  // of the last stage
   };
   Attempt continuation(const FrictionLaw& law, const Parameters& target, int from_index, int& solves);
+
   void apply(const Parameters& parameters);
   const Known* nearest(const Parameters& p, const Known* other = nullptr) const;
   // `path`: indices in known_ of the continuation under way (its start state, then its stages).
@@ -94,12 +102,28 @@ class RollingModel {
   std::unique_ptr<NonlinearProblem> problem_;
   std::unique_ptr<NewtonSolver> newton_;
   Eigen::VectorXd base_;  // the static footprint
-  // du/dδz of the last converged δz step of hold_load, and the parameters of the state it started from.
-  Eigen::VectorXd deflection_rate_;
-  Parameters deflection_rate_at_ = Parameters::Zero();
   double deflection_ = 0.0;
   std::vector<Known> known_;
   ProgressSink progress_;
 };
+
+// Secant iteration on Rk for Qy = 0 (|Qy| ≤ 1e-4 Qz) at the given slip angle and camber, from `rk` with
+// the first slope dQy/dRk `slope`. `tried` receives every converged (Rk, Qy).
+RollingModel::Solved secant_free_rolling(RollingModel& model, const FrictionLaw& law, WheelSlip slip, double slope,
+                                         std::vector<std::pair<double, double>>& tried, RollingSolveCounts& total,
+                                         const ProgressSink& progress);
+
+// Free rolling straight ahead (α = γ = 0), started from the rigid-tread estimate of the static state.
+// Returns the state; sets Re and the slip stiffness dQy/dκ (least squares over the iterates within
+// |κ| ≤ 0.003, else the last secant) in the result.
+RollingStateResult free_rolling(RollingModel& model, const RollingStudy& study, RollingResult& result,
+                                const ProgressSink& progress);
+
+// The static footprint of a rolling study: `footprint` when given and completed (a copy under the study's
+// name), else solved (from `nearby`, when given: see run_footprint).
+StaticContactResult rolling_footprint(const TyreMesh& tm, const TyreDescription& tyre, const InflationSettings& inflation,
+                                      const ContactSettings& contact, const RollingStudy& study,
+                                      const ProgressSink& progress, const InflationResult* inflated,
+                                      const StaticContactResult* footprint, const std::vector<PathState>* nearby);
 
 }  // namespace tirefem

@@ -186,7 +186,7 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
         run.error = fmt::format("{} failed: {}", run.phase, e.what());
         sink("warning: " + run.error);
       }
-      run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      run.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
   };
   // A footprint at a target load starts from the states of a load curve of the same problem (support,
@@ -265,12 +265,12 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     }
     ++k;
   }
-  // A tyre test: a chain per load and series (longitudinal, lateral: tyre_test_rolling_study), the heaviest
-  // load first and its lateral series before its longitudinal one (they take longest), then its vertical
-  // curve. The two series of a load share its footprint when one finds the other's (SharedFootprints). The
-  // plans are complete before any task is made: the tasks refer to them.
+  // A tyre test: per load a task that solves the load's footprint and free rolling (RollingStart), where
+  // both its series begin, each series a task after it; and the vertical curve. The plans are complete
+  // before any task is made: the tasks refer to them.
   struct RigPlan {
     std::vector<RollingStudy> series;  // by load: longitudinal, lateral
+    std::vector<std::optional<RollingStart>> starts;  // by load
     LoadCurveStudy vertical;
     MeshSettings mesh;
     std::unique_ptr<TyreTestProgress> progress;
@@ -281,30 +281,75 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     RigPlan& r = rigs.emplace_back();
     for (std::size_t i = 0; i < s.load_factors.size(); ++i)
       for (const TyreTestSeries series : kRigSeries) r.series.push_back(tyre_test_rolling_study(s, i, series));
+    r.starts.resize(s.load_factors.size());
     r.vertical = tyre_test_vertical_study(s);
     r.mesh = s.mesh.value_or(c.mesh);
     r.progress = std::make_unique<TyreTestProgress>(s);
   }
-  for (const RigPlan& rig : rigs) {
-    for (const RollingStudy& s : rig.series) {
-      const std::string key = SharedFootprints::key(rig.mesh, s.support, s.target_load, s.load_tolerance);
-      chains.push_back({task(k, "tyre test '" + s.name + "'", [&, k, key, r = &rig, s = &s](const ProgressSink& sink) {
+  std::vector<std::optional<ChainStart>> chain_starts(chains.size());
+  for (RigPlan& rig : rigs) {
+    const int first = k;  // the runs: by load, longitudinal then lateral (as rig.series)
+    const auto series_task = [&](std::size_t i, std::size_t j) {
+      const int run = first + static_cast<int>(kRigSeries.size() * i + j);
+      const RollingStudy* s = &rig.series[kRigSeries.size() * i + j];
+      const std::string key = SharedFootprints::key(rig.mesh, s->support, s->target_load, s->load_tolerance);
+      return task(run, "tyre test '" + s->name + "'", [&, run, key, r = &rig, s, i](const ProgressSink& sink) {
         const auto point_done = [&] {
           if (const std::string line = r->progress->point_done(); !line.empty()) sink(line);
         };
-        runs[k].rolling = run_rolling(tyres.mesh(r->mesh), c.tyre, c.inflation, c.contact, *s, sink,
-                                      &tyres.inflated(r->mesh), footprints.find(key), point_done);
-        footprints.keep(key, runs[k].rolling->footprint);
-      })});
-      ++k;
-    }
-    std::reverse(chains.end() - static_cast<std::ptrdiff_t>(rig.series.size()), chains.end());
-    chains.push_back({task(k, "tyre test '" + rig.vertical.name + "'", [&, k, r = &rig](const ProgressSink& sink) {
+        const RollingStart* start = r->starts[i] ? &*r->starts[i] : nullptr;
+        runs[run].rolling = run_rolling(tyres.mesh(r->mesh), c.tyre, c.inflation, c.contact, *s, sink,
+                                        &tyres.inflated(r->mesh), footprints.find(key), point_done, nullptr, start);
+        footprints.keep(key, runs[run].rolling->footprint);
+      });
+    };
+    const auto start_task = [&](std::size_t i) {
+      const std::size_t lateral = kRigSeries.size() * i + 1;
+      const RollingStudy* s = &rig.series[lateral];
+      const std::string key = SharedFootprints::key(rig.mesh, s->support, s->target_load, s->load_tolerance);
+      return task(first + static_cast<int>(lateral), "tyre test '" + s->name + "'",
+                  [&, key, r = &rig, s, i](const ProgressSink& sink) {
+                    r->starts[i] = solve_rolling_start(tyres.mesh(r->mesh), c.tyre, c.inflation, c.contact, *s, sink,
+                                                       &tyres.inflated(r->mesh), footprints.find(key));
+                    if (r->starts[i]->footprint.completed) footprints.keep(key, r->starts[i]->footprint);
+                  });
+    };
+    const auto add = [&](TaskChain chain, std::optional<ChainStart> when = {}) {
+      chains.push_back(std::move(chain));
+      chain_starts.push_back(when);
+      return chains.size() - 1;
+    };
+    const int vertical = first + static_cast<int>(rig.series.size());
+    const auto vertical_task = task(vertical, "tyre test '" + rig.vertical.name + "'", [&, vertical, r = &rig](const ProgressSink& sink) {
       const MeshSettings half = tyre_test_vertical_mesh(r->mesh);
-      runs[k].contact =
+      runs[vertical].contact =
           run_load_curve(tyres.mesh(half), c.tyre, c.inflation, c.contact, r->vertical, sink, &tyres.inflated(half));
-    })});
-    ++k;
+    });
+    // In the order taken (on 2 workers): the heaviest load's start and lateral series; meanwhile the
+    // vertical curve and the next load's start, short, and then that load's longitudinal series as soon
+    // as its start is solved (the two longest series side by side from the start); then the lighter
+    // loads' series, each load's lateral one with its start.
+    if (rig.starts.empty()) {  // (the reader asks for at least one load)
+      add({vertical_task});
+      k = vertical + 1;
+      continue;
+    }
+    const std::size_t heaviest = rig.starts.size() - 1;
+    const std::size_t heaviest_start = add({start_task(heaviest), series_task(heaviest, 1)});
+    add({vertical_task});
+    std::optional<std::size_t> next_start;
+    if (heaviest > 0) next_start = add({start_task(heaviest - 1)});
+    add({series_task(heaviest, 0)}, ChainStart{heaviest_start, 1, true});
+    for (std::size_t i = heaviest; i-- > 0;) {
+      if (i + 1 == heaviest) {
+        add({series_task(i, 1)}, ChainStart{*next_start, 1});
+        add({series_task(i, 0)}, ChainStart{*next_start, 1});
+      } else {
+        const std::size_t own_start = add({start_task(i), series_task(i, 1)});
+        add({series_task(i, 0)}, ChainStart{own_start, 1});
+      }
+    }
+    k = vertical + 1;
   }
   const WorkerPlan plan = plan_workers(static_cast<int>(chains.size()), omp_get_max_threads());
   prefixed = plan.workers > 1;
@@ -313,7 +358,7 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
                                  study_count, plan.workers, plan.threads_per_worker,
                                  plan.threads_per_worker > 1 ? "s" : ""));
   const auto studies_start = std::chrono::steady_clock::now();
-  run_chains(chains, plan, stop, &share);
+  run_chains(chains, plan, stop, &share, chain_starts);
   const double studies_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - studies_start).count();
 
   // Results in the case's order.

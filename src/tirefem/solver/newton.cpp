@@ -446,6 +446,10 @@ bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du,
   }
 }
 
+bool NewtonSolver::solve_with_tangent(const Eigen::VectorXd& rhs, Eigen::VectorXd& x, double tolerance) {
+  return solve_linear(rhs, x, false, tolerance) && x.allFinite();
+}
+
 LoadPathResult follow_load_path(
     NewtonSolver& newton, Eigen::VectorXd& u, const LoadSteppingSettings& settings,
     const std::function<void(const LoadStepRecord&, const Eigen::VectorXd&)>& on_step,

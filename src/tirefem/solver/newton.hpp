@@ -97,6 +97,11 @@ class NewtonSolver {
   void set_residual_tolerance(double tolerance) { settings_.residual_tolerance = tolerance; }
   int max_iterations() const { return settings_.max_iterations; }
   void set_max_iterations(int iterations) { settings_.max_iterations = iterations; }
+  // Solves K x = rhs over the free DOFs, K the tangent the problem last assembled (after solve(): the
+  // converged state's), as a Newton step is solved (GMRES on a reused factorisation, else a new one), to
+  // `tolerance` relative to the preconditioned residual. False when that fails: a derivative of the
+  // solution along a parameter (a tangent predictor) costs one such solve.
+  bool solve_with_tangent(const Eigen::VectorXd& rhs, Eigen::VectorXd& x, double tolerance);
 
  private:
   // `fresh`: factorise the current tangent even if a reused factorisation would do.
