@@ -47,59 +47,45 @@ TEST(ParallelChains, EveryTaskRunsOnceAndAChainInOrder) {
   }
 }
 
+// Three chains: a start (30 ms) and a first series after it; a second series waiting for the start; and
+// another. Returns the order in which their tasks ended.
+std::vector<std::string> start_and_series(int workers, bool hold_later) {
+  std::mutex m;
+  std::vector<std::string> order;
+  const auto note = [&](std::string what) {
+    const std::lock_guard lock(m);
+    order.push_back(std::move(what));
+  };
+  const auto slow = [&](std::string what) {
+    return [&, what] {
+      std::this_thread::sleep_for(std::chrono::milliseconds(30));
+      note(what);
+    };
+  };
+  std::vector<TaskChain> chains(3);
+  chains[0] = {slow("start"), slow("first series")};
+  chains[1] = {[&] { note("second series"); }};
+  chains[2] = {[&] { note("other"); }};
+  std::vector<std::optional<ChainStart>> starts(3);
+  starts[1] = ChainStart{0, 1, hold_later};
+  std::atomic<bool> stop{false};
+  run_chains(chains, {workers, 1}, stop, nullptr, starts);
+  return order;
+}
+
 // A chain that waits for the first task of an earlier one starts only once that task has run, whatever the
-// number of workers; a worker with nothing startable waits rather than leaving chains behind.
+// number of workers; a free worker meanwhile runs a chain that may start. With hold_later the waiting chain
+// keeps the free worker for itself: "other" runs after it.
 TEST(ParallelChains, AChainWaitsForTheTasksItStartsAfter) {
   for (int workers : {1, 2, 3}) {
-    std::mutex m;
-    std::vector<std::string> order;
-    const auto note = [&](std::string what) {
-      const std::lock_guard lock(m);
-      order.push_back(std::move(what));
-    };
-    std::vector<TaskChain> chains(3);
-    chains[0] = {[&] {
-                   std::this_thread::sleep_for(std::chrono::milliseconds(30));
-                   note("start");
-                 },
-                 [&] { note("first series"); }};
-    chains[1] = {[&] { note("second series"); }};
-    chains[2] = {[&] { note("other"); }};
-    std::vector<std::optional<ChainStart>> starts(3);
-    starts[1] = ChainStart{0, 1};
-    std::atomic<bool> stop{false};
-    run_chains(chains, {workers, 1}, stop, nullptr, starts);
+    const std::vector<std::string> order = start_and_series(workers, false);
     ASSERT_EQ(order.size(), 4u) << workers << " workers";
     const auto at = [&](const std::string& s) { return std::find(order.begin(), order.end(), s) - order.begin(); };
     EXPECT_LT(at("start"), at("second series")) << workers << " workers";
     EXPECT_LT(at("start"), at("first series")) << workers << " workers";
     if (workers >= 2) EXPECT_LT(at("other"), at("start")) << "the free worker runs the startable chain meanwhile";
   }
-  // With hold_later the waiting chain keeps the free worker for itself: "other" runs after it.
-  {
-    std::mutex m;
-    std::vector<std::string> order;
-    const auto note = [&](std::string what) {
-      const std::lock_guard lock(m);
-      order.push_back(std::move(what));
-    };
-    std::vector<TaskChain> chains(3);
-    chains[0] = {[&] {
-                   std::this_thread::sleep_for(std::chrono::milliseconds(30));
-                   note("start");
-                 },
-                 [&] {
-                   std::this_thread::sleep_for(std::chrono::milliseconds(30));
-                   note("first series");
-                 }};
-    chains[1] = {[&] { note("second series"); }};
-    chains[2] = {[&] { note("other"); }};
-    std::vector<std::optional<ChainStart>> starts(3);
-    starts[1] = ChainStart{0, 1, true};
-    std::atomic<bool> stop{false};
-    run_chains(chains, {2, 1}, stop, nullptr, starts);
-    EXPECT_EQ(order, (std::vector<std::string>{"start", "second series", "other", "first series"}));
-  }
+  EXPECT_EQ(start_and_series(2, true), (std::vector<std::string>{"start", "second series", "other", "first series"}));
   std::vector<TaskChain> chains(2, TaskChain{[] {}});
   std::vector<std::optional<ChainStart>> backwards(2);
   backwards[0] = ChainStart{1, 1};

@@ -186,12 +186,7 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
                           const InflationResult* inflated, const StaticContactResult* footprint,
                           const std::function<void()>& point_done, const std::vector<PathState>* nearby,
                           const RollingStart* start) {
-  RollingResult r;
-  r.name = study.name;
-  r.support = study.support;
-  r.friction = study.friction;
-  r.reverse = study.reverse;
-  r.half_model = tm.half_model;
+  RollingResult r = rolling_result_of(study, tm);
   if (progress)
     progress(fmt::format("rolling '{}': {}, μ = {}, travel {}, at the footprint of Qz = {} N", study.name,
                          support_label(study.support), study.friction, study.reverse ? "-y" : "+y",
@@ -206,9 +201,7 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
     return r;
   }
   const auto t_rolling = Clock::now();
-  r.deflection_mm = r.footprint.final_state.deflection_mm;
-  r.axle_z = tm.axis_z;
-  r.loaded_radius_mm = tm.axis_z - r.deflection_mm;
+  place_axle_at_footprint(r, tm);
   RollingModel model(tm, tyre, inflation, contact, study, r);
   model.set_progress(progress);
 

@@ -119,6 +119,11 @@ RollingModel::Solved secant_free_rolling(RollingModel& model, const FrictionLaw&
 RollingStateResult free_rolling(RollingModel& model, const RollingStudy& study, RollingResult& result,
                                 const ProgressSink& progress);
 
+// A study's result before anything is solved (its name, support, friction, travel, model half or full).
+RollingResult rolling_result_of(const RollingStudy& study, const TyreMesh& tm);
+// δz, the axle height and the loaded radius of the result's footprint.
+void place_axle_at_footprint(RollingResult& r, const TyreMesh& tm);
+
 // The static footprint of a rolling study: `footprint` when given and completed (a copy under the study's
 // name), else solved (from `nearby`, when given: see run_footprint).
 StaticContactResult rolling_footprint(const TyreMesh& tm, const TyreDescription& tyre, const InflationSettings& inflation,

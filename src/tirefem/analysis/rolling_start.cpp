@@ -79,6 +79,22 @@ RollingStateResult free_rolling(RollingModel& model, const RollingStudy& study, 
   return state;
 }
 
+RollingResult rolling_result_of(const RollingStudy& study, const TyreMesh& tm) {
+  RollingResult r;
+  r.name = study.name;
+  r.support = study.support;
+  r.friction = study.friction;
+  r.reverse = study.reverse;
+  r.half_model = tm.half_model;
+  return r;
+}
+
+void place_axle_at_footprint(RollingResult& r, const TyreMesh& tm) {
+  r.deflection_mm = r.footprint.final_state.deflection_mm;
+  r.axle_z = tm.axis_z;
+  r.loaded_radius_mm = tm.axis_z - r.deflection_mm;
+}
+
 StaticContactResult rolling_footprint(const TyreMesh& tm, const TyreDescription& tyre, const InflationSettings& inflation,
                                       const ContactSettings& contact, const RollingStudy& study,
                                       const ProgressSink& progress, const InflationResult* inflated,
@@ -109,16 +125,9 @@ RollingStart solve_rolling_start(const TyreMesh& tm, const TyreDescription& tyre
   start.footprint = rolling_footprint(tm, tyre, inflation, contact, study, progress, inflated, footprint, nullptr);
   if (!start.footprint.completed) return start;
   // The model as run_rolling builds it, at the footprint's deflection.
-  RollingResult r;
-  r.name = study.name;
-  r.support = study.support;
-  r.friction = study.friction;
-  r.reverse = study.reverse;
-  r.half_model = tm.half_model;
+  RollingResult r = rolling_result_of(study, tm);
   r.footprint = start.footprint;
-  r.deflection_mm = r.footprint.final_state.deflection_mm;
-  r.axle_z = tm.axis_z;
-  r.loaded_radius_mm = tm.axis_z - r.deflection_mm;
+  place_axle_at_footprint(r, tm);
   RollingModel model(tm, tyre, inflation, contact, study, r);
   model.set_progress(progress);
   start.free = free_rolling(model, study, r, progress);
