@@ -10,9 +10,11 @@
 //   1.5e-3 and 1.9e-2; it falls with Δ: at 0.002 mm 1.4e-4 and 2.9e-4). A ∂R/∂δz by differences over
 //   0.01 mm instead of 1e-5 fails both (dQz/dδz 12% low, the prediction 15% off).
 // Also the rolling start shared by studies at one load (RollingStart): a model that adopts its states
-// solves a state as one that found free rolling itself (1e-6 relative).
+// solves a state as one that found free rolling itself (1e-6 relative); a start solved with another
+// friction is refused.
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include <gtest/gtest.h>
 
@@ -138,6 +140,11 @@ TEST(RollingStart, AStudyFromTheSharedStartSolvesAsOneThatFoundFreeRollingItself
     EXPECT_NEAR(b.Mx_Nmm, a.Mx_Nmm, 1e-6 * std::abs(a.Mx_Nmm) + 1e-3) << alone.states[i].name;
   }
   EXPECT_NEAR(shared.states[1].figures.Qy_N, alone.states[1].figures.Qy_N, 1e-6 * std::abs(alone.states[1].figures.Qy_N));
+  RollingStudy slippery = own;
+  slippery.friction = 0.5;
+  EXPECT_THROW(run_rolling(full_tyre(), c.tyre, c.inflation, rate_settings(), slippery, {}, nullptr, nullptr, {}, nullptr,
+                           &start()),
+               std::invalid_argument);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <iterator>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -191,6 +192,8 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
     progress(fmt::format("rolling '{}': {}, μ = {}, travel {}, at the footprint of Qz = {} N", study.name,
                          support_label(study.support), study.friction, study.reverse ? "-y" : "+y",
                          study.target_load));
+  if (start && (start->friction != study.friction || start->reverse != study.reverse))
+    throw std::invalid_argument("run_rolling: a rolling start solved with another friction or travel");
   // (A start whose footprint failed: the study fails with it, rather than solving it again.)
   r.footprint = start && !start->footprint.completed
                     ? start->footprint
