@@ -4,8 +4,8 @@
 #include <chrono>
 #include <condition_variable>
 #include <exception>
-#include <stdexcept>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
 
 #include <omp.h>
@@ -31,7 +31,8 @@ void run_chains(const std::vector<TaskChain>& chains, const WorkerPlan& plan, st
   for (std::size_t c = 0; c < starts.size() && c < chains.size(); ++c)
     if (starts[c] && starts[c]->after_chain >= c)
       throw std::invalid_argument("run_chains: a chain may wait only for an earlier one");
-  // Under `mutex`: which chains are taken, how many tasks of each have run (or that it ended early).
+  // Under `mutex`: which chains are taken, how many tasks of each have run. (A run that stops starts
+  // nothing more: the waiting workers see `stop` and return.)
   std::mutex mutex;
   std::condition_variable progressed;
   std::vector<char> taken(chains.size(), 0);
@@ -79,8 +80,6 @@ void run_chains(const std::vector<TaskChain>& chains, const WorkerPlan& plan, st
           chains[*c][t]();
           ran(*c, t + 1);
         }
-        // A chain stopped short counts as run through: nothing waits for it for ever.
-        ran(*c, chains[*c].size());
       } catch (...) {
         {
           const std::lock_guard lock(mutex);

@@ -85,7 +85,6 @@ class RollingModel {
     ContactSolveOutcome last;  // of the last stage
   };
   Attempt continuation(const FrictionLaw& law, const Parameters& target, int from_index, int& solves);
-
   void apply(const Parameters& parameters);
   const Known* nearest(const Parameters& p, const Known* other = nullptr) const;
   // `path`: indices in known_ of the continuation under way (its start state, then its stages).

@@ -289,10 +289,13 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
   std::vector<std::optional<ChainStart>> chain_starts(chains.size());
   for (RigPlan& rig : rigs) {
     const int first = k;  // the runs: by load, longitudinal then lateral (as rig.series)
+    const auto footprint_key = [&](const RollingStudy& s) {
+      return SharedFootprints::key(rig.mesh, s.support, s.target_load, s.load_tolerance);
+    };
     const auto series_task = [&](std::size_t i, std::size_t j) {
       const int run = first + static_cast<int>(kRigSeries.size() * i + j);
       const RollingStudy* s = &rig.series[kRigSeries.size() * i + j];
-      const std::string key = SharedFootprints::key(rig.mesh, s->support, s->target_load, s->load_tolerance);
+      const std::string key = footprint_key(*s);
       return task(run, "tyre test '" + s->name + "'", [&, run, key, r = &rig, s, i](const ProgressSink& sink) {
         const auto point_done = [&] {
           if (const std::string line = r->progress->point_done(); !line.empty()) sink(line);
@@ -306,7 +309,7 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     const auto start_task = [&](std::size_t i) {
       const std::size_t lateral = kRigSeries.size() * i + 1;
       const RollingStudy* s = &rig.series[lateral];
-      const std::string key = SharedFootprints::key(rig.mesh, s->support, s->target_load, s->load_tolerance);
+      const std::string key = footprint_key(*s);
       return task(first + static_cast<int>(lateral), "tyre test '" + s->name + "'",
                   [&, key, r = &rig, s, i](const ProgressSink& sink) {
                     r->starts[i] = solve_rolling_start(tyres.mesh(r->mesh), c.tyre, c.inflation, c.contact, *s, sink,
