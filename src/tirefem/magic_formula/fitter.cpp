@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include <Eigen/Core>
@@ -274,6 +275,25 @@ int run_levenberg_marquardt(FitGroup group, const GroupPoints& data, const std::
   return static_cast<int>(lm.nfev + lm.njev * (2 * functor.inputs()));
 }
 
+// The least-squares function of a curve without a peak (a Coulomb tread saturating at mu Fz) has more than
+// one minimum: a large D with C < 1 and E < 0, or a D near the largest |F|/Fz with C > 1 and E near 0.
+// Which one Levenberg-Marquardt finds from the data's start values changed with 0.09% changes of the rig's
+// lateral forces (PKY1 -24.0 or -26.9, PDY1 0.85 or 0.67, Fy RMS 0.57% or 1.02% of the peak); a start
+// from C 0.7 times lower finds the better one in both. The shape factor's start is scaled by each of these.
+constexpr double kShapeFactorStarts[] = {1.0, 0.7, 1.4};
+// A fit whose shape factor ends above this (the force or trail changes sign at large slip; a start from C
+// twice the data's found QCZ1 = 745 with QBZ1 = 2764) is kept only when no start gives a plausible one.
+constexpr double kMaxPlausibleShapeFactor = 2.0;
+
+Member shape_factor_of(FitGroup group) {
+  switch (group) {
+    case FitGroup::pure_longitudinal: return &M::PCX1;
+    case FitGroup::pure_lateral: return &M::PCY1;
+    case FitGroup::aligning: return &M::QCZ1;
+  }
+  return &M::PCX1;
+}
+
 const char* channel_name(FitGroup group) {
   return group == FitGroup::pure_longitudinal ? "Fx" : (group == FitGroup::pure_lateral ? "Fy" : "Mz");
 }
@@ -306,16 +326,35 @@ GroupFitResult fit_coefficient_group(FitGroup group, std::span<const TyreTestPoi
                                             channel_name(group), all.points.size(), determined.size()));
 
   set_start_values(group, pure, c);
+  const M start = c;
+  const Member shape = shape_factor_of(group);
   int evaluations = 0;
   bool converged = false;
-  // Passes: the nominal-load coefficients, then all without camber on the gamma = 0 points, then (with
-  // camber sweeps) all on all points.
-  evaluations += run_levenberg_marquardt(group, pure, nominal, c, converged);
-  evaluations += run_levenberg_marquardt(group, pure, uncambered, c, converged);
-  if (determined.size() > uncambered.size()) evaluations += run_levenberg_marquardt(group, all, determined, c, converged);
-
-  double sum = 0;
-  for (const TyreTestPoint& p : all.points) sum += std::pow(model(group, c, p) - measured(group, p), 2);
+  double sum = std::numeric_limits<double>::infinity();
+  bool plausible = false;
+  // Starts: the shape factor C from the data, and scaled down and up (kShapeFactorStarts). Of the fits
+  // with a plausible C, the one with the least sum of squares is kept (the first of equal ones).
+  for (double scale : kShapeFactorStarts) {
+    M trial = start;
+    trial.*shape *= scale;
+    bool trial_converged = false;
+    // Passes: the nominal-load coefficients, then all without camber on the gamma = 0 points, then (with
+    // camber sweeps) all on all points.
+    evaluations += run_levenberg_marquardt(group, pure, nominal, trial, trial_converged);
+    evaluations += run_levenberg_marquardt(group, pure, uncambered, trial, trial_converged);
+    if (determined.size() > uncambered.size())
+      evaluations += run_levenberg_marquardt(group, all, determined, trial, trial_converged);
+    double trial_sum = 0;
+    for (const TyreTestPoint& p : all.points) trial_sum += std::pow(model(group, trial, p) - measured(group, p), 2);
+    ++result.starts;
+    const bool trial_plausible = trial.*shape <= kMaxPlausibleShapeFactor;
+    if (plausible && !trial_plausible) continue;
+    if (plausible == trial_plausible && !(trial_sum < sum)) continue;
+    sum = trial_sum;
+    plausible = trial_plausible;
+    c = trial;
+    converged = trial_converged;
+  }
   result.error.channel = channel_name(group);
   result.error.points = static_cast<int>(all.points.size());
   result.error.rms = std::sqrt(sum / static_cast<double>(all.points.size()));

@@ -29,7 +29,9 @@
 // nearest zero give the slip stiffness (PKX1-2; PKY2 from the ratio at two loads, then PKY1), the shift
 // (PHX, PHY) and the trail -dMz/dFy and residual moment (QDZ1-2, QDZ6-7); the peak |F| gives mu (PDX1-2,
 // PDY1-2), the fall after the peak C. Passes: the nominal-load coefficients, then all without camber on the
-// gamma = 0 points, then (with cambered sweeps) all on all points.
+// gamma = 0 points, then (with cambered sweeps) all on all points. The passes run from three starts (the
+// shape factor C from the data, 0.7 and 1.4 times it) and the fit with the least sum of squares and C <= 2
+// is kept: a curve without a peak has more than one minimum (fitter.cpp, kShapeFactorStarts).
 #include <span>
 #include <string>
 #include <vector>
@@ -59,6 +61,7 @@ struct GroupFitResult {
   std::vector<std::string> not_determined;
   ChannelFitError error;
   int function_evaluations = 0;
+  int starts = 0;  // start values tried (the best fit is kept)
   bool converged = false;
   double seconds = 0;
 };
