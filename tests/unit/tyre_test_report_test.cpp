@@ -156,7 +156,15 @@ TEST(TyreTestReport, PointCountAndStudiesPerLoad) {
   s.nominal_load = 3000.0;
   s.cambers_deg = {2.0};
   EXPECT_EQ(tyre_test_points(s), 3 * (2 + 1 + 15 + 15));  // free rolling in each series
-  const RollingStudy r = tyre_test_rolling_study(s, 2, TyreTestSeries::longitudinal);
+  MeshSettings full;
+  full.half_model = false;
+  full.circumferential_elements = 64;
+  const MeshSettings half = tyre_test_half_mesh(full);
+  EXPECT_TRUE(half.half_model);
+  EXPECT_EQ(half.circumferential_elements, 64);
+  // A tyre that is not its own mirror image: both series on the full model, the cambered state in the
+  // longitudinal one.
+  const RollingStudy r = tyre_test_rolling_study(s, 2, TyreTestSeries::longitudinal, full);
   EXPECT_EQ(r.name, "rig_Fz4500");
   EXPECT_EQ(r.target_load, 4500.0);
   ASSERT_EQ(r.states.size(), 2u);
@@ -164,19 +172,33 @@ TEST(TyreTestReport, PointCountAndStudiesPerLoad) {
   ASSERT_TRUE(r.sweep && !r.angle_sweep);
   EXPECT_TRUE(r.sweep->hold_load);
   EXPECT_EQ(r.tread_shear, RollingStudy::TreadShear::planar);
-  const RollingStudy a = tyre_test_rolling_study(s, 2, TyreTestSeries::lateral);
+  ASSERT_TRUE(r.mesh);
+  EXPECT_FALSE(r.mesh->half_model);
+  const RollingStudy a = tyre_test_rolling_study(s, 2, TyreTestSeries::lateral, full);
   EXPECT_EQ(a.name, "rig_Fz4500_alpha");
   EXPECT_EQ(a.target_load, 4500.0);
   EXPECT_TRUE(a.states.empty());  // its free rolling is the longitudinal series' row
   ASSERT_TRUE(a.angle_sweep && !a.sweep);
   EXPECT_TRUE(a.angle_sweep->hold_load && a.angle_sweep->mirror_negative_angles);
   EXPECT_EQ(a.tread_shear, RollingStudy::TreadShear::planar);
-  MeshSettings full;
-  full.half_model = false;
-  full.circumferential_elements = 64;
-  const MeshSettings half = tyre_test_vertical_mesh(full);
-  EXPECT_TRUE(half.half_model);
-  EXPECT_EQ(half.circumferential_elements, 64);
+  ASSERT_TRUE(a.mesh);
+  EXPECT_FALSE(a.mesh->half_model);
+  // Its own mirror image: the longitudinal series on the half model, the cambered state moved to the
+  // lateral series on the full one.
+  const RollingStudy rh = tyre_test_rolling_study(s, 2, TyreTestSeries::longitudinal, full, TyreTestLongitudinalModel::half);
+  ASSERT_TRUE(rh.mesh);
+  EXPECT_TRUE(rh.mesh->half_model);
+  EXPECT_EQ(rh.mesh->circumferential_elements, 64);
+  ASSERT_EQ(rh.states.size(), 1u);
+  EXPECT_EQ(rh.states[0].camber_deg, 0.0);
+  ASSERT_TRUE(rh.sweep);
+  EXPECT_EQ(rh.tread_shear, RollingStudy::TreadShear::planar);
+  const RollingStudy ah = tyre_test_rolling_study(s, 2, TyreTestSeries::lateral, full, TyreTestLongitudinalModel::half);
+  ASSERT_TRUE(ah.mesh);
+  EXPECT_FALSE(ah.mesh->half_model);
+  ASSERT_EQ(ah.states.size(), 1u);
+  EXPECT_EQ(ah.states[0].camber_deg, 2.0);
+  ASSERT_TRUE(ah.angle_sweep);
 }
 
 }  // namespace

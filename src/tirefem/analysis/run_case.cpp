@@ -141,7 +141,7 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
   for (const TyreTestStudy& s : c.tyre_tests) {
     try {
       // The half model first: the full model then starts from its mirror image, row by row.
-      tyres.inflated(tyre_test_vertical_mesh(s.mesh.value_or(c.mesh)));
+      tyres.inflated(tyre_test_half_mesh(s.mesh.value_or(c.mesh)));
       tyres.inflated(s.mesh.value_or(c.mesh));
     } catch (const std::runtime_error&) {
     }
@@ -270,39 +270,49 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
   // before any task is made: the tasks refer to them.
   struct RigPlan {
     std::vector<RollingStudy> series;  // by load: longitudinal, lateral
-    std::vector<std::optional<RollingStart>> starts;  // by load
+    std::vector<std::optional<RollingStart>> starts;  // by load (the lateral series' footprint and free rolling)
     LoadCurveStudy vertical;
     MeshSettings mesh;
+    TyreTestLongitudinalModel longitudinal = TyreTestLongitudinalModel::full;
     std::unique_ptr<TyreTestProgress> progress;
   };
   constexpr std::array kRigSeries{TyreTestSeries::longitudinal, TyreTestSeries::lateral};
   std::vector<RigPlan> rigs;
   for (const TyreTestStudy& s : c.tyre_tests) {
     RigPlan& r = rigs.emplace_back();
+    r.mesh = s.mesh.value_or(c.mesh);
+    try {
+      r.longitudinal = tyre_test_longitudinal_model(tyres.mesh(r.mesh));
+    } catch (const std::exception&) {  // a mesh that cannot be built fails the rig's studies when they ask
+    }
     for (std::size_t i = 0; i < s.load_factors.size(); ++i)
-      for (const TyreTestSeries series : kRigSeries) r.series.push_back(tyre_test_rolling_study(s, i, series));
+      for (const TyreTestSeries series : kRigSeries)
+        r.series.push_back(tyre_test_rolling_study(s, i, series, r.mesh, r.longitudinal));
     r.starts.resize(s.load_factors.size());
     r.vertical = tyre_test_vertical_study(s);
-    r.mesh = s.mesh.value_or(c.mesh);
     r.progress = std::make_unique<TyreTestProgress>(s);
   }
   std::vector<std::optional<ChainStart>> chain_starts(chains.size());
   for (RigPlan& rig : rigs) {
     const int first = k;  // the runs: by load, longitudinal then lateral (as rig.series)
+    // Each series on its own mesh (RollingStudy::mesh: the rig's, or its half for the longitudinal one).
     const auto footprint_key = [&](const RollingStudy& s) {
-      return SharedFootprints::key(rig.mesh, s.support, s.target_load, s.load_tolerance);
+      return SharedFootprints::key(*s.mesh, s.support, s.target_load, s.load_tolerance);
     };
+    const bool half = rig.longitudinal == TyreTestLongitudinalModel::half;
     const auto series_task = [&](std::size_t i, std::size_t j) {
       const int run = first + static_cast<int>(kRigSeries.size() * i + j);
       const RollingStudy* s = &rig.series[kRigSeries.size() * i + j];
       const std::string key = footprint_key(*s);
-      return task(run, "tyre test '" + s->name + "'", [&, run, key, r = &rig, s, i](const ProgressSink& sink) {
+      // The start (the lateral series' footprint and free rolling) serves the series on its mesh.
+      const bool shares_start = kRigSeries[j] == TyreTestSeries::lateral || !half;
+      return task(run, "tyre test '" + s->name + "'", [&, run, key, r = &rig, s, i, shares_start](const ProgressSink& sink) {
         const auto point_done = [&] {
           if (const std::string line = r->progress->point_done(); !line.empty()) sink(line);
         };
-        const RollingStart* start = r->starts[i] ? &*r->starts[i] : nullptr;
-        runs[run].rolling = run_rolling(tyres.mesh(r->mesh), c.tyre, c.inflation, c.contact, *s, sink,
-                                        &tyres.inflated(r->mesh), footprints.find(key), point_done, nullptr, start);
+        const RollingStart* start = shares_start && r->starts[i] ? &*r->starts[i] : nullptr;
+        runs[run].rolling = run_rolling(tyres.mesh(*s->mesh), c.tyre, c.inflation, c.contact, *s, sink,
+                                        &tyres.inflated(*s->mesh), footprints.find(key), point_done, nullptr, start);
         footprints.keep(key, runs[run].rolling->footprint);
       });
     };
@@ -312,8 +322,8 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
       const std::string key = footprint_key(*s);
       return task(first + static_cast<int>(lateral), "tyre test '" + s->name + "'",
                   [&, key, r = &rig, s, i](const ProgressSink& sink) {
-                    r->starts[i] = solve_rolling_start(tyres.mesh(r->mesh), c.tyre, c.inflation, c.contact, *s, sink,
-                                                       &tyres.inflated(r->mesh), footprints.find(key));
+                    r->starts[i] = solve_rolling_start(tyres.mesh(*s->mesh), c.tyre, c.inflation, c.contact, *s,
+                                                       sink, &tyres.inflated(*s->mesh), footprints.find(key));
                     if (r->starts[i]->footprint.completed) footprints.keep(key, r->starts[i]->footprint);
                   });
     };
@@ -324,20 +334,31 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     };
     const int vertical = first + static_cast<int>(rig.series.size());
     const auto vertical_task = task(vertical, "tyre test '" + rig.vertical.name + "'", [&, vertical, r = &rig](const ProgressSink& sink) {
-      const MeshSettings half = tyre_test_vertical_mesh(r->mesh);
-      runs[vertical].contact =
-          run_load_curve(tyres.mesh(half), c.tyre, c.inflation, c.contact, r->vertical, sink, &tyres.inflated(half));
+      const MeshSettings half_mesh = tyre_test_half_mesh(r->mesh);
+      runs[vertical].contact = run_load_curve(tyres.mesh(half_mesh), c.tyre, c.inflation, c.contact, r->vertical, sink,
+                                              &tyres.inflated(half_mesh));
     });
-    // In the order taken (on 2 workers): the heaviest load's start and lateral series; meanwhile the
-    // vertical curve and the next load's start, short, and then that load's longitudinal series as soon
-    // as its start is solved (the two longest series side by side from the start); then the lighter
-    // loads' series, each load's lateral one with its start.
     if (rig.starts.empty()) {  // (the reader asks for at least one load)
       add({vertical_task});
       k = vertical + 1;
       continue;
     }
     const std::size_t heaviest = rig.starts.size() - 1;
+    if (half) {
+      // Longest first (on 2 workers): the heaviest load's lateral series with its start, its longitudinal
+      // one on the half model beside it, the vertical curve, then the lighter loads alike.
+      for (std::size_t i = heaviest + 1; i-- > 0;) {
+        add({start_task(i), series_task(i, 1)});
+        add({series_task(i, 0)});
+        if (i == heaviest) add({vertical_task});
+      }
+      k = vertical + 1;
+      continue;
+    }
+    // In the order taken (on 2 workers): the heaviest load's start and lateral series; meanwhile the
+    // vertical curve and the next load's start, short, and then that load's longitudinal series as soon
+    // as its start is solved (the two longest series side by side from the start); then the lighter
+    // loads' series, each load's lateral one with its start.
     const std::size_t heaviest_start = add({start_task(heaviest), series_task(heaviest, 1)});
     add({vertical_task});
     std::optional<std::size_t> next_start;

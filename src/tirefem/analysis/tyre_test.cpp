@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "tirefem/tyre/tyre_mesh.hpp"
+
 namespace tirefem {
 namespace {
 constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
@@ -51,17 +53,34 @@ std::string TyreTestProgress::point_done() {
                      done_ < total_ ? fmt::format(", about {:.0f} s left", left) : "");
 }
 
-RollingStudy tyre_test_rolling_study(const TyreTestStudy& study, std::size_t load_index, TyreTestSeries series) {
+TyreTestLongitudinalModel tyre_test_longitudinal_model(const TyreMesh& rig_full_mesh) {
+  return mirror_symmetric(rig_full_mesh) ? TyreTestLongitudinalModel::half : TyreTestLongitudinalModel::full;
+}
+
+RollingStudy tyre_test_rolling_study(const TyreTestStudy& study, std::size_t load_index, TyreTestSeries series,
+                                     const MeshSettings& rig_mesh, TyreTestLongitudinalModel longitudinal) {
   const double load = study.load_factors.at(load_index) * study.nominal_load;
   RollingStudy r;
   const bool lateral = series == TyreTestSeries::lateral;
+  const bool half = longitudinal == TyreTestLongitudinalModel::half;
   r.name = fmt::format("{}_Fz{:.0f}{}", study.name, load, lateral ? "_alpha" : "");
   r.target_load = load;
   r.load_tolerance = study.load_tolerance;
   r.friction = study.friction;
   r.tread_shear = RollingStudy::TreadShear::planar;
-  r.mesh = study.mesh;
+  r.mesh = lateral || !half ? rig_mesh : tyre_test_half_mesh(rig_mesh);
+  // Cambered free rolling needs the full model: in the longitudinal series when that has it, else in the
+  // lateral one (solved before its α sweep, which starts from free rolling all the same).
+  const auto add_cambered_states = [&] {
+    for (double gamma : study.cambers_deg) {
+      RollingStateSpec s;
+      s.camber_deg = gamma;
+      s.name = fmt::format("free_camber_{:g}", gamma);
+      r.states.push_back(s);
+    }
+  };
   if (lateral) {
+    if (half) add_cambered_states();
     r.angle_sweep = study.angle_sweep;
     r.angle_sweep->slip = 0.0;
     r.angle_sweep->camber_deg = 0.0;
@@ -70,12 +89,7 @@ RollingStudy tyre_test_rolling_study(const TyreTestStudy& study, std::size_t loa
     return r;  // free rolling is solved all the same (the sweep starts from it), not reported twice
   }
   r.states.push_back({});  // free rolling: Re at this load
-  for (double gamma : study.cambers_deg) {
-    RollingStateSpec s;
-    s.camber_deg = gamma;
-    s.name = fmt::format("free_camber_{:g}", gamma);
-    r.states.push_back(s);
-  }
+  if (!half) add_cambered_states();
   r.sweep = study.slip_sweep;
   r.sweep->hold_load = true;
   return r;
@@ -89,7 +103,7 @@ LoadCurveStudy tyre_test_vertical_study(const TyreTestStudy& study) {
   return s;
 }
 
-MeshSettings tyre_test_vertical_mesh(const MeshSettings& rig_mesh) {
+MeshSettings tyre_test_half_mesh(const MeshSettings& rig_mesh) {
   MeshSettings m = rig_mesh;
   m.half_model = true;
   return m;
@@ -123,7 +137,8 @@ TyreTestResult assemble_tyre_test(const TyreTestStudy& study, double unloaded_ra
       t.failures.push_back(fmt::format("load {:.0f} N: {}", l.target_load_N, failure));
     }
     // The footprint, the radii and the slip stiffness: the same in both series (the same footprint and free
-    // rolling), taken from the first that has them; the cornering stiffness from the lateral one.
+    // rolling, or the half model's, equal to 1e-6), taken from the first that has them; the cornering
+    // stiffness from the lateral one.
     bool footprint = false;
     for (const RollingResult* r : series) {
       if (!footprint && !r->footprint.points.empty()) {

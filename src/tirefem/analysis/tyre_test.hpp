@@ -16,18 +16,31 @@
 namespace tirefem {
 
 // The rig's two series at a load, independent experiments as on a flat track: the longitudinal one (free
-// rolling, cambered free rolling, the κ sweep) and the lateral one (the α sweep and the cornering
-// stiffness). Each is a rolling study of its own, from the same footprint and free rolling, so the two run
-// side by side.
+// rolling, the κ sweep, and cambered free rolling unless that series runs on the half model) and the
+// lateral one (the α sweep, the cornering stiffness, then the cambered free rolling). Each is a rolling
+// study of its own, so the two run side by side.
 enum class TyreTestSeries { longitudinal, lateral };
 
+// Where the longitudinal series runs. Straight ahead (α = γ = 0) a tyre that is its own mirror image in the
+// wheel plane (tyre_mesh.hpp, mirror_symmetric) deforms symmetrically, so its κ states are the half
+// model's with the planar tread shear (test Cornering.StraightAheadTheFullModelReproducesTheHalfModel):
+// about a third of the full model's cost per Newton iteration (80 × 46 at 5550 N: free rolling 12
+// iterations in 3.9 s against 12.6 s), and Fy, Mz, Mx 0 to round-off (the full model's rig: |Fy| up to 3.6 N). Otherwise the full
+// model, from the lateral series' footprint and free rolling.
+enum class TyreTestLongitudinalModel { full, half };
+TyreTestLongitudinalModel tyre_test_longitudinal_model(const TyreMesh& rig_full_mesh);
+
 // The rolling study of one series at the rig's load number `load_index` (name "<rig>_Fz<N>", the lateral
-// series "<rig>_Fz<N>_alpha").
-RollingStudy tyre_test_rolling_study(const TyreTestStudy& study, std::size_t load_index, TyreTestSeries series);
-// The load–deflection curve: a plane pressed from the undeformed tyre, on `vertical_mesh`.
+// series "<rig>_Fz<N>_alpha"). The rig's mesh is the study's; a longitudinal series on the half model has
+// its half (tyre_test_half_mesh) as `mesh`, and the cambered states move to the lateral series.
+RollingStudy tyre_test_rolling_study(const TyreTestStudy& study, std::size_t load_index, TyreTestSeries series,
+                                     const MeshSettings& rig_mesh,
+                                     TyreTestLongitudinalModel longitudinal = TyreTestLongitudinalModel::full);
+// The load–deflection curve: a plane pressed from the undeformed tyre, on the half model.
 LoadCurveStudy tyre_test_vertical_study(const TyreTestStudy& study);
-// The half model of the rig's mesh: vertical loading is symmetric about the equatorial plane.
-MeshSettings tyre_test_vertical_mesh(const MeshSettings& rig_mesh);
+// The half model of the rig's mesh: vertical loading, and straight-ahead rolling of a tyre that is its own
+// mirror image, are symmetric about the equatorial plane.
+MeshSettings tyre_test_half_mesh(const MeshSettings& rig_mesh);
 
 // The states and sweep points of the whole test (all loads and both series; each series solves its own
 // free rolling), as run_rolling counts them finished.
@@ -85,7 +98,7 @@ struct TyreTestResult {
   double nominal_load_N = 0.0;
   double unloaded_radius_mm = 0.0;
   std::vector<TyreTestLoad> loads;
-  std::vector<TyreTestRow> rows;              // by load, then free, cambers, κ sweep, α sweep
+  std::vector<TyreTestRow> rows;              // by load, then by series: free, κ sweep, cambers, α sweep (cambers before the κ sweep when the longitudinal series has them)
   std::optional<StaticContactResult> vertical;  // the load–deflection curve (half model)
   bool completed = false;
   std::vector<std::string> failures;
