@@ -1,5 +1,5 @@
 // The virtual rig end to end (issue 12): tests/smoke/tyre_test_case.toml runs a small [[tyre_test]] (2 loads,
-// 7 slips, 7 slip angles, a vertical curve) on a coarse full mesh; the run must write the measurement table
+// 7 slips, 7 slip angles, a cambered state, a vertical curve) on a coarse full mesh; the run must write the measurement table
 // in SI units and W-axis signs, the plots, and a PAC2002 .tir that reads back, whose fit passes through the
 // FE points (RMS below 3% of the peak for Fx and Fy, 10% for Mz: issue 12's criteria), with the signs of
 // the W axes (braking Fx < 0, α > 0 gives Fy < 0 and PKY1 < 0). The tyre is its own mirror image, so its κ
@@ -68,13 +68,23 @@ TEST(CliTyreTest, RigWritesTheTableAndAFittedTirFile) {
                         "plots/rig_fy_alpha.gp", "plots/rig_mz_alpha.gp", "plots/rig_vertical.gp"})
     EXPECT_TRUE(fs::exists(out / f)) << f;
   const auto rows = read_table(out / "rig/tyre_test.csv");
-  ASSERT_EQ(rows.size(), 2u * (1 + 7 + 7));
-  int braking = 0, positive_alpha = 0;
+  ASSERT_EQ(rows.size(), 2u * (1 + 1 + 7 + 7));
+  int braking = 0, positive_alpha = 0, cambered = 0;
   for (const auto& r : rows) {
-    EXPECT_NEAR(r.at("FZ"), r.at("TARGET_FZ"), 2e-3 * r.at("TARGET_FZ"));  // SI: N; held at the load
+    // SI: N; held at the load (the sweeps; a cambered free-rolling state is solved at the footprint's δz)
+    if (r.at("GAMMA") == 0) EXPECT_NEAR(r.at("FZ"), r.at("TARGET_FZ"), 2e-3 * r.at("TARGET_FZ"));
     if (r.at("KAPPA") < -1e-9 && r.at("ALPHA") == 0) {
       ++braking;
       EXPECT_LT(r.at("FX"), 0) << "braking gives Fx < 0";
+    }
+    if (r.at("GAMMA") != 0) {
+      // The cambered free-rolling state (solved in the lateral series, on the full model): γ = +2° in
+      // radians, and its camber thrust Fy < 0 in the W axes (test Cornering.OppositeCambersMirrorTheForces).
+      ++cambered;
+      EXPECT_NEAR(r.at("GAMMA"), 2.0 * 3.14159265358979 / 180.0, 1e-12);
+      EXPECT_EQ(r.at("SERIES"), 3.0);
+      EXPECT_EQ(r.at("ALPHA"), 0.0);
+      EXPECT_LT(r.at("FY"), 0.0);
     }
     if (r.at("ALPHA") == 0 && r.at("GAMMA") == 0) {
       // The longitudinal series on the half model (the tyre is its own mirror image): no lateral force
@@ -95,6 +105,7 @@ TEST(CliTyreTest, RigWritesTheTableAndAFittedTirFile) {
     EXPECT_LT(r.at("RL"), 0.29);
   }
   EXPECT_EQ(braking, 2 * 3);
+  EXPECT_EQ(cambered, 2);
   EXPECT_EQ(positive_alpha, 2 * 3);
   const tirefem::TirFile tir = tirefem::read_tir_file(out / "rig/rig.tir");
   const tirefem::MagicFormulaCoefficients& c = tir.coefficients;
