@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "contact_support.hpp"
+#include "tirefem/analysis/mesh_transfer.hpp"
 #include "tirefem/analysis/shared_states.hpp"
 
 namespace tirefem::verification {
@@ -237,6 +238,52 @@ TEST(ContactLoadCurve, FootprintFromAnotherMeshsLoadCurveFindsTheSameState) {
   };
   check(48, 36, true);   // the example's 120 onto 80 in proportion
   check(36, 24, false);  // 74 mm elements round the patch: Newton fails from the other mesh's states
+}
+
+// The virtual rig's start on the full model from its vertical curve on the half model (the same
+// circumferential stations): the curve's states around the target, mirrored onto the full model
+// (mirrored_onto: exact, a half model's state is the full model's symmetric state), start the footprint
+// search there. It finds the state the search from the unloaded tyre finds, within the load tolerance, in
+// fewer Newton iterations.
+TEST(ContactLoadCurve, FootprintOnTheFullModelFromTheHalfModelsLoadCurve) {
+  const Case& c = example_case();
+  const ContactSettings settings = test_contact_settings(ContactSettings::Iteration::single_loop);
+  const TyreMesh half = build_tyre_mesh(c.tyre, coarse_mesh(36, 8, true));
+  const TyreMesh full = build_tyre_mesh(c.tyre, coarse_mesh(36, 8, false));
+  ASSERT_TRUE(mirrors_onto(half, full));
+  EXPECT_FALSE(mirrors_onto(full, half));
+  EXPECT_FALSE(mirrors_onto(half, build_tyre_mesh(c.tyre, coarse_mesh(24, 8, false)))) << "other rows";
+  const InflationResult half_inflated = inflate_for_contact(half, c.inflation);
+  const InflationResult inflated = inflate_for_contact(full, c.inflation);
+  ASSERT_TRUE(half_inflated.converged && inflated.converged);
+  const StaticContactResult curve = run_load_curve(half, c.tyre, c.inflation, settings,
+                                                   load_curve("plane", plane_support(), 20.0, 5), {}, &half_inflated,
+                                                   /*keep_path=*/true);
+  ASSERT_TRUE(curve.completed) << curve.failure;
+  FootprintStudy study;
+  study.name = "footprint";
+  study.support = plane_support();
+  study.target_load = 1500.0;
+  const std::vector<PathState> near = load_curve_states_near(curve, half, full, study.target_load);
+  ASSERT_EQ(near.size(), 2u);
+  const StaticContactResult scratch = run_footprint(full, c.tyre, c.inflation, settings, study, {}, &inflated);
+  const StaticContactResult seeded =
+      run_footprint(full, c.tyre, c.inflation, settings, study, {}, &inflated, nullptr, &near);
+  ASSERT_TRUE(scratch.completed) << scratch.failure;
+  ASSERT_TRUE(seeded.completed) << seeded.failure;
+  const double tolerance = study.load_tolerance * study.target_load;
+  const double qa = scratch.points.back().patch.Qz_N, qb = seeded.points.back().patch.Qz_N;
+  const double da = scratch.final_state.deflection_mm, db = seeded.final_state.deflection_mm;
+  const std::size_t last = scratch.points.size() - 1;
+  const double stiffness = (scratch.points[last].patch.Qz_N - scratch.points[last - 1].patch.Qz_N) /
+                           (scratch.points[last].deflection_mm - scratch.points[last - 1].deflection_mm);
+  std::printf("  full 36 x 8 from the unloaded tyre: Qz %.3f N at δz %.5f mm, %d Newton iterations; from the half "
+              "model's curve: %.3f N at %.5f mm, %d Newton iterations\n",
+              qa, da, scratch.counters.newton_iterations, qb, db, seeded.counters.newton_iterations);
+  ASSERT_GT(stiffness, 0.0);
+  EXPECT_NEAR(qb, study.target_load, tolerance);
+  EXPECT_NEAR(da, db, 2.0 * tolerance / stiffness);
+  EXPECT_LT(seeded.counters.newton_iterations, scratch.counters.newton_iterations);
 }
 
 }  // namespace

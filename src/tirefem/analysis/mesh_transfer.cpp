@@ -61,6 +61,16 @@ Eigen::VectorXd turned_onto(const TyreMesh& from, const Eigen::VectorXd& displac
   return u;
 }
 
+bool mirrors_onto(const TyreMesh& from, const TyreMesh& to) {
+  return from.half_model && !to.half_model && from.mesh.v_values == to.mesh.v_values && turns_onto(from, to);
+}
+
+Eigen::VectorXd mirrored_onto(const TyreMesh& from, const Eigen::VectorXd& displacement, const TyreMesh& to) {
+  if (!mirrors_onto(from, to))
+    throw std::invalid_argument("mirrored_onto: not a half model onto the full model of its stations");
+  return turned_onto(from, displacement, to);  // on the same rows: each row its own (see there)
+}
+
 bool interpolates_onto(const TyreMesh& from, const TyreMesh& to) {
   return from.half_model == to.half_model && !matching_columns(from, to).empty();
 }

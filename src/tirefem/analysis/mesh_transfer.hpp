@@ -22,5 +22,11 @@ bool turns_onto(const TyreMesh& from, const TyreMesh& to);
 Eigen::VectorXd interpolated_onto(const TyreMesh& from, const Eigen::VectorXd& displacement, const TyreMesh& to);
 // Whether interpolated_onto carries a state of `from` onto `to`.
 bool interpolates_onto(const TyreMesh& from, const TyreMesh& to);
+// A half model's state (any, not only an axisymmetric one) onto the full model of the same meridional and
+// circumferential stations: each node takes its own node's displacement, the mirror side its mirror image
+// (x → −x). Exact: a state of the half model is the symmetric state of the full model. Throws when
+// mirrors_onto is false.
+Eigen::VectorXd mirrored_onto(const TyreMesh& from, const Eigen::VectorXd& displacement, const TyreMesh& to);
+bool mirrors_onto(const TyreMesh& from, const TyreMesh& to);
 
 }  // namespace tirefem

@@ -161,13 +161,14 @@ struct RollingStart {
   bool reverse = false;
 };
 
-// The footprint (as run_rolling finds it: `footprint` if given and completed, else solved) and free rolling
-// of `study`.
+// The footprint (as run_rolling finds it: `footprint` if given and completed, else solved, from `nearby`
+// when given) and free rolling of `study`.
 RollingStart solve_rolling_start(const TyreMesh& tyre_mesh, const TyreDescription& tyre,
                                  const InflationSettings& inflation, const ContactSettings& contact,
                                  const RollingStudy& study, const ProgressSink& progress = {},
                                  const InflationResult* inflated = nullptr,
-                                 const StaticContactResult* footprint = nullptr);
+                                 const StaticContactResult* footprint = nullptr,
+                                 const std::vector<PathState>* nearby = nullptr);
 
 // From `inflated` when given (see run_footprint), else from its own inflation. `footprint`, when given, is
 // the completed static footprint of this mesh on the study's support at its target load (shared by the

@@ -118,11 +118,11 @@ StaticContactResult rolling_footprint(const TyreMesh& tm, const TyreDescription&
 RollingStart solve_rolling_start(const TyreMesh& tm, const TyreDescription& tyre, const InflationSettings& inflation,
                                  const ContactSettings& contact, const RollingStudy& study,
                                  const ProgressSink& progress, const InflationResult* inflated,
-                                 const StaticContactResult* footprint) {
+                                 const StaticContactResult* footprint, const std::vector<PathState>* nearby) {
   RollingStart start;
   start.friction = study.friction;
   start.reverse = study.reverse;
-  start.footprint = rolling_footprint(tm, tyre, inflation, contact, study, progress, inflated, footprint, nullptr);
+  start.footprint = rolling_footprint(tm, tyre, inflation, contact, study, progress, inflated, footprint, nearby);
   if (!start.footprint.completed) return start;
   // The model as run_rolling builds it, at the footprint's deflection.
   RollingResult r = rolling_result_of(study, tm);

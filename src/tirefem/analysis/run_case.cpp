@@ -316,14 +316,23 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
         footprints.keep(key, runs[run].rolling->footprint);
       });
     };
+    const int vertical = first + static_cast<int>(rig.series.size());
+    // The start of a series on the full model. With the longitudinal series on the half model, the start's
+    // chain runs after the vertical curve's (below) and its footprint search starts from the curve's states
+    // around the load, mirrored (when the curve completed and reaches the load).
     const auto start_task = [&](std::size_t i) {
       const std::size_t lateral = kRigSeries.size() * i + 1;
       const RollingStudy* s = &rig.series[lateral];
       const std::string key = footprint_key(*s);
       return task(first + static_cast<int>(lateral), "tyre test '" + s->name + "'",
-                  [&, key, r = &rig, s, i](const ProgressSink& sink) {
+                  [&, key, r = &rig, s, i, vertical, half](const ProgressSink& sink) {
+                    std::vector<PathState> nearby;
+                    if (half && runs[vertical].contact && runs[vertical].contact->completed)
+                      nearby = load_curve_states_near(*runs[vertical].contact, tyres.mesh(tyre_test_half_mesh(r->mesh)),
+                                                      tyres.mesh(*s->mesh), s->target_load);
                     r->starts[i] = solve_rolling_start(tyres.mesh(*s->mesh), c.tyre, c.inflation, c.contact, *s,
-                                                       sink, &tyres.inflated(*s->mesh), footprints.find(key));
+                                                       sink, &tyres.inflated(*s->mesh), footprints.find(key),
+                                                       nearby.empty() ? nullptr : &nearby);
                     if (r->starts[i]->footprint.completed) footprints.keep(key, r->starts[i]->footprint);
                   });
     };
@@ -332,11 +341,10 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
       chain_starts.push_back(when);
       return chains.size() - 1;
     };
-    const int vertical = first + static_cast<int>(rig.series.size());
-    const auto vertical_task = task(vertical, "tyre test '" + rig.vertical.name + "'", [&, vertical, r = &rig](const ProgressSink& sink) {
+    const auto vertical_task = task(vertical, "tyre test '" + rig.vertical.name + "'", [&, vertical, r = &rig, half](const ProgressSink& sink) {
       const MeshSettings half_mesh = tyre_test_half_mesh(r->mesh);
       runs[vertical].contact = run_load_curve(tyres.mesh(half_mesh), c.tyre, c.inflation, c.contact, r->vertical, sink,
-                                              &tyres.inflated(half_mesh));
+                                              &tyres.inflated(half_mesh), /*keep_path=*/half);
     });
     if (rig.starts.empty()) {  // (the reader asks for at least one load)
       add({vertical_task});
@@ -345,12 +353,14 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     }
     const std::size_t heaviest = rig.starts.size() - 1;
     if (half) {
-      // Longest first (on 2 workers): the heaviest load's lateral series with its start, its longitudinal
-      // one on the half model beside it, the vertical curve, then the lighter loads alike.
+      // The vertical curve first: the lateral series' starts on the full model begin from its states
+      // (mirrored: at 5550 N on 80 × 46 the footprint in 2 solves, 7 s, instead of 11, 29 s). Meanwhile the heaviest load's
+      // longitudinal series on the half model; then the lateral series, each with its start, and the other
+      // longitudinal ones, heaviest first.
+      const std::size_t curve = add({vertical_task});
       for (std::size_t i = heaviest + 1; i-- > 0;) {
-        add({start_task(i), series_task(i, 1)});
+        add({start_task(i), series_task(i, 1)}, ChainStart{curve, 1});
         add({series_task(i, 0)});
-        if (i == heaviest) add({vertical_task});
       }
       k = vertical + 1;
       continue;

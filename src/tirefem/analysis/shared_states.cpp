@@ -92,12 +92,15 @@ void SharedFootprints::keep(const std::string& key, const StaticContactResult& r
 
 std::vector<PathState> load_curve_states_near(const StaticContactResult& curve, const TyreMesh& curve_mesh,
                                               const TyreMesh& mesh, double load) {
-  if (!interpolates_onto(curve_mesh, mesh)) return {};
+  const bool mirror = mirrors_onto(curve_mesh, mesh);
+  if (!mirror && !interpolates_onto(curve_mesh, mesh)) return {};
   const auto [below, above] = states_around_load(curve.path, load);
   if (!below) return {};
   std::vector<PathState> near;
   for (const PathState* p : {below, above})
-    near.push_back({p->deflection_mm, p->Qz_N, interpolated_onto(curve_mesh, p->displacement, mesh)});
+    near.push_back({p->deflection_mm, p->Qz_N,
+                    mirror ? mirrored_onto(curve_mesh, p->displacement, mesh)
+                           : interpolated_onto(curve_mesh, p->displacement, mesh)});
   return near;
 }
 

@@ -55,9 +55,10 @@ class SharedFootprints {
 };
 
 // The two states of a load curve (its path kept) on either side of `load`, the last below and the first
-// at or above it, carried from the curve's mesh onto `mesh` (interpolated_onto; their Qz the curve's):
-// where a footprint on `mesh` at that load starts from (run_footprint's `nearby`). Empty when the curve
-// does not reach the load or the meshes differ in kind or meridional stations.
+// at or above it, carried from the curve's mesh onto `mesh` (interpolated_onto, or mirrored_onto from a
+// half model onto its full model; their Qz the curve's): where a footprint on `mesh` at that load starts
+// from (run_footprint's `nearby`). Empty when the curve does not reach the load or the states cannot be
+// carried (the meshes differ in meridional stations, or in kind other than half onto its own full).
 std::vector<PathState> load_curve_states_near(const StaticContactResult& curve, const TyreMesh& curve_mesh,
                                               const TyreMesh& mesh, double load);
 
