@@ -1,6 +1,7 @@
 // Load characteristic Qz(δz) of the example tyre (MODEL.md §4, §6) on coarse meshes: properties that hold
 // whatever the mesh.
 #include <cstdio>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -188,6 +189,30 @@ TEST(ContactLoadCurve, FootprintFromALoadCurveFindsTheSameState) {
   EXPECT_LT(seeded.counters.newton_iterations, scratch.counters.newton_iterations);
 }
 
+// A footprint found from a load curve's states (`seeded`) against the search from the unloaded tyre
+// (`scratch`): both at the target load within its tolerance, the same δz within 2 · tolerance / (dQz/dδz),
+// and (when `fewer_iterations`) in fewer Newton iterations.
+void expect_the_same_footprint(const StaticContactResult& scratch, const StaticContactResult& seeded,
+                               const FootprintStudy& study, const std::string& label, bool fewer_iterations) {
+  ASSERT_TRUE(scratch.completed) << scratch.failure;
+  ASSERT_TRUE(seeded.completed) << seeded.failure;
+  const double tolerance = study.load_tolerance * study.target_load;
+  const double qa = scratch.points.back().patch.Qz_N, qb = seeded.points.back().patch.Qz_N;
+  const double da = scratch.final_state.deflection_mm, db = seeded.final_state.deflection_mm;
+  const std::size_t last = scratch.points.size() - 1;
+  const double stiffness = (scratch.points[last].patch.Qz_N - scratch.points[last - 1].patch.Qz_N) /
+                           (scratch.points[last].deflection_mm - scratch.points[last - 1].deflection_mm);
+  std::printf("  %s: from the unloaded tyre Qz %.3f N at δz %.5f mm, %d Newton iterations; from the curve %.3f N "
+              "at %.5f mm, %d Newton iterations; dQz/dδz %.1f N/mm\n",
+              label.c_str(), qa, da, scratch.counters.newton_iterations, qb, db, seeded.counters.newton_iterations,
+              stiffness);
+  ASSERT_GT(stiffness, 0.0);
+  EXPECT_NEAR(qa, study.target_load, tolerance);
+  EXPECT_NEAR(qb, study.target_load, tolerance);
+  EXPECT_NEAR(da, db, 2.0 * tolerance / stiffness);
+  if (fewer_iterations) EXPECT_LT(seeded.counters.newton_iterations, scratch.counters.newton_iterations);
+}
+
 // The same from a load curve on another mesh of the same meridional stations (the CLI's rolling studies
 // on their own mesh after the case's load curve): the footprint searched from the curve's two states
 // around the target, interpolated onto this mesh, equals the search from the unloaded tyre within the load
@@ -200,7 +225,6 @@ TEST(ContactLoadCurve, FootprintFromAnotherMeshsLoadCurveFindsTheSameState) {
   study.name = "footprint";
   study.support = plane_support();
   study.target_load = 1500.0;
-  const double tolerance = study.load_tolerance * study.target_load;
   const auto check = [&](int curve_elements, int elements, bool fewer_iterations) {
     const TyreMesh curve_mesh = build_tyre_mesh(c.tyre, coarse_mesh(curve_elements, 8));
     const TyreMesh tm = build_tyre_mesh(c.tyre, coarse_mesh(elements, 8));
@@ -219,22 +243,8 @@ TEST(ContactLoadCurve, FootprintFromAnotherMeshsLoadCurveFindsTheSameState) {
     const StaticContactResult scratch = run_footprint(tm, c.tyre, c.inflation, settings, study, {}, &inflated);
     const StaticContactResult seeded =
         run_footprint(tm, c.tyre, c.inflation, settings, study, {}, &inflated, nullptr, &near);
-    ASSERT_TRUE(scratch.completed) << scratch.failure;
-    ASSERT_TRUE(seeded.completed) << seeded.failure;
-    const double qa = scratch.points.back().patch.Qz_N, qb = seeded.points.back().patch.Qz_N;
-    const double da = scratch.final_state.deflection_mm, db = seeded.final_state.deflection_mm;
-    const std::size_t last = scratch.points.size() - 1;
-    const double stiffness = (scratch.points[last].patch.Qz_N - scratch.points[last - 1].patch.Qz_N) /
-                             (scratch.points[last].deflection_mm - scratch.points[last - 1].deflection_mm);
-    std::printf("  %d x 8 from the unloaded tyre: Qz %.3f N at δz %.5f mm, %d Newton iterations; from the %d x 8 "
-                "curve: %.3f N at %.5f mm, %d Newton iterations; dQz/dδz %.1f N/mm\n",
-                elements, qa, da, scratch.counters.newton_iterations, curve_elements, qb, db,
-                seeded.counters.newton_iterations, stiffness);
-    ASSERT_GT(stiffness, 0.0);
-    EXPECT_NEAR(qa, study.target_load, tolerance);
-    EXPECT_NEAR(qb, study.target_load, tolerance);
-    EXPECT_NEAR(da, db, 2.0 * tolerance / stiffness);
-    if (fewer_iterations) EXPECT_LT(seeded.counters.newton_iterations, scratch.counters.newton_iterations);
+    expect_the_same_footprint(scratch, seeded, study, std::to_string(elements) + " x 8 from the " +
+                                  std::to_string(curve_elements) + " x 8 curve", fewer_iterations);
   };
   check(48, 36, true);   // the example's 120 onto 80 in proportion
   check(36, 24, false);  // 74 mm elements round the patch: Newton fails from the other mesh's states
@@ -269,21 +279,7 @@ TEST(ContactLoadCurve, FootprintOnTheFullModelFromTheHalfModelsLoadCurve) {
   const StaticContactResult scratch = run_footprint(full, c.tyre, c.inflation, settings, study, {}, &inflated);
   const StaticContactResult seeded =
       run_footprint(full, c.tyre, c.inflation, settings, study, {}, &inflated, nullptr, &near);
-  ASSERT_TRUE(scratch.completed) << scratch.failure;
-  ASSERT_TRUE(seeded.completed) << seeded.failure;
-  const double tolerance = study.load_tolerance * study.target_load;
-  const double qa = scratch.points.back().patch.Qz_N, qb = seeded.points.back().patch.Qz_N;
-  const double da = scratch.final_state.deflection_mm, db = seeded.final_state.deflection_mm;
-  const std::size_t last = scratch.points.size() - 1;
-  const double stiffness = (scratch.points[last].patch.Qz_N - scratch.points[last - 1].patch.Qz_N) /
-                           (scratch.points[last].deflection_mm - scratch.points[last - 1].deflection_mm);
-  std::printf("  full 36 x 8 from the unloaded tyre: Qz %.3f N at δz %.5f mm, %d Newton iterations; from the half "
-              "model's curve: %.3f N at %.5f mm, %d Newton iterations\n",
-              qa, da, scratch.counters.newton_iterations, qb, db, seeded.counters.newton_iterations);
-  ASSERT_GT(stiffness, 0.0);
-  EXPECT_NEAR(qb, study.target_load, tolerance);
-  EXPECT_NEAR(da, db, 2.0 * tolerance / stiffness);
-  EXPECT_LT(seeded.counters.newton_iterations, scratch.counters.newton_iterations);
+  expect_the_same_footprint(scratch, seeded, study, "full 36 x 8 from the half model's 36 x 8 curve", true);
 }
 
 }  // namespace
