@@ -1,8 +1,8 @@
 // The virtual rig end to end (issue 12): tests/smoke/tyre_test_case.toml runs a small [[tyre_test]] (2 loads,
-// 7 slips, 7 slip angles, a cambered state, a vertical curve) on a coarse full mesh; the run must write the measurement table
-// in SI units and W-axis signs, the plots, and a PAC2002 .tir that reads back, whose fit passes through the
-// FE points (RMS below 3% of the peak for Fx and Fy, 10% for Mz: issue 12's criteria), with the signs of
-// the W axes (braking Fx < 0, α > 0 gives Fy < 0 and PKY1 < 0). The tyre is its own mirror image, so its κ
+// 7 slips, 7 slip angles, a cambered state, a vertical curve) on a coarse full mesh; the run must write the
+// measurement table in SI units and W-axis signs, the plots, and a PAC2002 .tir that reads back, whose fit
+// passes through the FE points (RMS below 3% of the peak for Fx and Fy, 10% for Mz: issue 12's criteria),
+// with the signs of the W axes (braking Fx < 0, α > 0 gives Fy < 0 and PKY1 < 0). The tyre is its own mirror image, so its κ
 // series runs on the half model: Fy, Mz and Mx of the straight-ahead rows are 0 to round-off.
 #include <cmath>
 #include <cstdlib>

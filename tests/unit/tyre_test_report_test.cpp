@@ -185,7 +185,8 @@ TEST(TyreTestReport, PointCountAndStudiesPerLoad) {
   EXPECT_FALSE(a.mesh->half_model);
   // Its own mirror image: the longitudinal series on the half model, the cambered state moved to the
   // lateral series on the full one.
-  const RollingStudy rh = tyre_test_rolling_study(s, 2, TyreTestSeries::longitudinal, full, TyreTestLongitudinalModel::half);
+  const RollingStudy rh =
+      tyre_test_rolling_study(s, 2, TyreTestSeries::longitudinal, full, TyreTestLongitudinalModel::half);
   ASSERT_TRUE(rh.mesh);
   EXPECT_TRUE(rh.mesh->half_model);
   EXPECT_EQ(rh.mesh->circumferential_elements, 64);
@@ -193,7 +194,8 @@ TEST(TyreTestReport, PointCountAndStudiesPerLoad) {
   EXPECT_EQ(rh.states[0].camber_deg, 0.0);
   ASSERT_TRUE(rh.sweep);
   EXPECT_EQ(rh.tread_shear, RollingStudy::TreadShear::planar);
-  const RollingStudy ah = tyre_test_rolling_study(s, 2, TyreTestSeries::lateral, full, TyreTestLongitudinalModel::half);
+  const RollingStudy ah =
+      tyre_test_rolling_study(s, 2, TyreTestSeries::lateral, full, TyreTestLongitudinalModel::half);
   ASSERT_TRUE(ah.mesh);
   EXPECT_FALSE(ah.mesh->half_model);
   ASSERT_EQ(ah.states.size(), 1u);

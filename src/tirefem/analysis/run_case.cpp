@@ -306,7 +306,8 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
       const std::string key = footprint_key(*s);
       // The start (the lateral series' footprint and free rolling) serves the series on its mesh.
       const bool shares_start = kRigSeries[j] == TyreTestSeries::lateral || !half;
-      return task(run, "tyre test '" + s->name + "'", [&, run, key, r = &rig, s, i, shares_start](const ProgressSink& sink) {
+      const std::string name = "tyre test '" + s->name + "'";
+      return task(run, name, [&, run, key, r = &rig, s, i, shares_start](const ProgressSink& sink) {
         const auto point_done = [&] {
           if (const std::string line = r->progress->point_done(); !line.empty()) sink(line);
         };
@@ -341,7 +342,8 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
       chain_starts.push_back(when);
       return chains.size() - 1;
     };
-    const auto vertical_task = task(vertical, "tyre test '" + rig.vertical.name + "'", [&, vertical, r = &rig, half](const ProgressSink& sink) {
+    const std::string vertical_name = "tyre test '" + rig.vertical.name + "'";
+    const auto vertical_task = task(vertical, vertical_name, [&, vertical, r = &rig, half](const ProgressSink& sink) {
       const MeshSettings half_mesh = tyre_test_half_mesh(r->mesh);
       runs[vertical].contact = run_load_curve(tyres.mesh(half_mesh), c.tyre, c.inflation, c.contact, r->vertical, sink,
                                               &tyres.inflated(half_mesh), /*keep_path=*/half);
@@ -354,9 +356,9 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     const std::size_t heaviest = rig.starts.size() - 1;
     if (half) {
       // The vertical curve first: the lateral series' starts on the full model begin from its states
-      // (mirrored: at 5550 N on 80 × 46 the footprint in 2 solves, 7 s, instead of 11, 29 s). Meanwhile the heaviest load's
-      // longitudinal series on the half model; then the lateral series, each with its start, and the other
-      // longitudinal ones, heaviest first.
+      // (mirrored: at 5550 N on 80 × 46 the footprint in 2 solves, 7 s, instead of 11, 29 s). Meanwhile
+      // the heaviest load's longitudinal series on the half model; then the lateral series, each with its
+      // start, and the other longitudinal ones, heaviest first.
       const std::size_t curve = add({vertical_task});
       for (std::size_t i = heaviest + 1; i-- > 0;) {
         add({start_task(i), series_task(i, 1)}, ChainStart{curve, 1});
@@ -431,24 +433,11 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
   for (std::size_t i = 0; i < c.footprints.size(); ++i, ++k) {
     if (!runs[k].contact) continue;
     const StaticContactResult& r = *runs[k].contact;
-    write_csv(folder.path(r.name + "/load_points.csv"), load_curve_table(r));
     if (!r.completed) {
       report(progress, "warning: footprint " + incomplete_message(r));
       incomplete.push_back(incomplete_message(r));
-    } else {
-      plots.attempt("footprint '" + r.name + "'", [&] { write_loaded_state(folder, plots, tm, c, r); });
-      report(progress,
-             fmt::format("footprint '{}': Qz {:.1f} N at δz {:.2f} mm{}, patch {:.1f} × {:.1f} mm, area {:.0f} "
-                         "mm², pmax {:.3f} MPa",
-                         r.name, r.points.back().patch.Qz_N, deflection_from_origin(r, r.final_state.deflection_mm),
-                         r.deflection_from == DeflectionOrigin::first_touch ? " from first touch" : "",
-                         r.points.back().patch.patch_length_mm, r.points.back().patch.patch_width_mm,
-                         r.points.back().patch.contact_area_mm2, r.points.back().patch.max_pressure_MPa));
     }
-    toml::table t = footprint_summary(r);
-    t.insert("solver", counters_table(r.counters));
-    add_krylov(*t["solver"].as_table(), r.counters);
-    footprint_summaries.push_back(std::move(t));
+    footprint_summaries.push_back(report_footprint(folder, plots, progress, tm, c, r));
   }
   if (!c.footprints.empty()) summary.insert("footprints", std::move(footprint_summaries));
   for (std::size_t i = 0; i < c.rolling.size(); ++i, ++k) {
@@ -459,13 +448,7 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
       report(progress, "warning: " + m + " (converged states kept)");
       incomplete.push_back(m);
     }
-    const TyreMesh& mesh = tyres.mesh(c.rolling[i].mesh.value_or(c.mesh));
-    plots.attempt("rolling '" + r.name + "'", [&] { write_rolling(folder, plots, mesh, c, r); });
-    toml::table t = rolling_summary(r);
-    t.insert("footprint_solver", counters_table(r.footprint.counters));
-    t.insert("solver", counters_table(r.counters));
-    add_krylov(*t["solver"].as_table(), r.counters);
-    rolling_summaries.push_back(std::move(t));
+    rolling_summaries.push_back(report_rolling(folder, plots, tyres.mesh(c.rolling[i].mesh.value_or(c.mesh)), c, r));
   }
   if (!c.rolling.empty()) summary.insert("rolling", std::move(rolling_summaries));
   toml::array rig_summaries;

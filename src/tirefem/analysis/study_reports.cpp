@@ -111,6 +111,35 @@ void write_rolling(const ResultsFolder& folder, ReportWriter& plots, const TyreM
   plots.plot(n + "_belt_tension", circumferential_belt_plot(table));
 }
 
+toml::table report_footprint(const ResultsFolder& folder, ReportWriter& plots, const ProgressSink& progress,
+                             const TyreMesh& tm, const Case& c, const StaticContactResult& r) {
+  write_csv(folder.path(r.name + "/load_points.csv"), load_curve_table(r));
+  if (r.completed) {
+    plots.attempt("footprint '" + r.name + "'", [&] { write_loaded_state(folder, plots, tm, c, r); });
+    const PatchFigures& p = r.points.back().patch;
+    if (progress)
+      progress(fmt::format("footprint '{}': Qz {:.1f} N at δz {:.2f} mm{}, patch {:.1f} × {:.1f} mm, area {:.0f} "
+                           "mm², pmax {:.3f} MPa",
+                           r.name, p.Qz_N, deflection_from_origin(r, r.final_state.deflection_mm),
+                           r.deflection_from == DeflectionOrigin::first_touch ? " from first touch" : "",
+                           p.patch_length_mm, p.patch_width_mm, p.contact_area_mm2, p.max_pressure_MPa));
+  }
+  toml::table t = footprint_summary(r);
+  t.insert("solver", counters_table(r.counters));
+  add_krylov(*t["solver"].as_table(), r.counters);
+  return t;
+}
+
+toml::table report_rolling(const ResultsFolder& folder, ReportWriter& plots, const TyreMesh& tm, const Case& c,
+                           const RollingResult& r) {
+  plots.attempt("rolling '" + r.name + "'", [&] { write_rolling(folder, plots, tm, c, r); });
+  toml::table t = rolling_summary(r);
+  t.insert("footprint_solver", counters_table(r.footprint.counters));
+  t.insert("solver", counters_table(r.counters));
+  add_krylov(*t["solver"].as_table(), r.counters);
+  return t;
+}
+
 toml::table report_tyre_test(const ResultsFolder& folder, ReportWriter& plots, const ProgressSink& progress,
                              const Case& c, const TyreTestResult& t) {
   // The Magic Formula of the converged points (a test that stopped short is fitted on what it has).

@@ -60,6 +60,15 @@ void write_loaded_state(const ResultsFolder& folder, ReportWriter& plots, const 
 void write_rolling(const ResultsFolder& folder, ReportWriter& plots, const TyreMesh& tm, const Case& c,
                    const RollingResult& r);
 
+// A footprint study: NAME/load_points.csv, and when it completed its loaded state (write_loaded_state) and
+// a progress line with its figures. Returns its summary.json entry.
+toml::table report_footprint(const ResultsFolder& folder, ReportWriter& plots, const ProgressSink& progress,
+                             const TyreMesh& tm, const Case& c, const StaticContactResult& r);
+
+// A rolling study's files (write_rolling, on its own mesh `tm`); returns its summary.json entry.
+toml::table report_rolling(const ResultsFolder& folder, ReportWriter& plots, const TyreMesh& tm, const Case& c,
+                           const RollingResult& r);
+
 // A tyre test: fits its Magic Formula (progress: the fit's errors and normalised figures), writes
 // NAME/tyre_test.csv (the measurement table), NAME/vertical.csv, with a fit NAME/NAME.tir, and the plots of
 // FX(κ), FY(α), MZ(α) at every load and of the vertical characteristic; returns its summary.json entry. A

@@ -16,17 +16,17 @@
 namespace tirefem {
 
 // The rig's two series at a load, independent experiments as on a flat track: the longitudinal one (free
-// rolling, the κ sweep, and cambered free rolling unless that series runs on the half model) and the
-// lateral one (the α sweep, the cornering stiffness, then the cambered free rolling). Each is a rolling
-// study of its own, so the two run side by side.
+// rolling, the cambered free rolling unless this series runs on the half model, the κ sweep) and the
+// lateral one (the cambered free rolling when the other is on the half model, the α sweep, the cornering
+// stiffness). Each is a rolling study of its own, so the two run side by side.
 enum class TyreTestSeries { longitudinal, lateral };
 
 // Where the longitudinal series runs. Straight ahead (α = γ = 0) a tyre that is its own mirror image in the
 // wheel plane (tyre_mesh.hpp, mirror_symmetric) deforms symmetrically, so its κ states are the half
 // model's with the planar tread shear (test Cornering.StraightAheadTheFullModelReproducesTheHalfModel):
 // about a third of the full model's cost per Newton iteration (80 × 46 at 5550 N: free rolling 12
-// iterations in 3.9 s against 12.6 s), and Fy, Mz, Mx 0 to round-off (the full model's rig: |Fy| up to 3.6 N). Otherwise the full
-// model, from the lateral series' footprint and free rolling.
+// iterations in 3.9 s against 12.6 s), and Fy, Mz, Mx 0 to round-off (the full model's rig: |Fy| up to
+// 3.6 N). Otherwise the full model, from the lateral series' footprint and free rolling.
 enum class TyreTestLongitudinalModel { full, half };
 TyreTestLongitudinalModel tyre_test_longitudinal_model(const TyreMesh& rig_full_mesh);
 
@@ -98,7 +98,9 @@ struct TyreTestResult {
   double nominal_load_N = 0.0;
   double unloaded_radius_mm = 0.0;
   std::vector<TyreTestLoad> loads;
-  std::vector<TyreTestRow> rows;              // by load, then by series: free, κ sweep, cambers, α sweep (cambers before the κ sweep when the longitudinal series has them)
+  // By load, then by series: free, κ sweep, cambers, α sweep (the cambers before the κ sweep when the
+  // longitudinal series has them).
+  std::vector<TyreTestRow> rows;
   std::optional<StaticContactResult> vertical;  // the load–deflection curve (half model)
   bool completed = false;
   std::vector<std::string> failures;
