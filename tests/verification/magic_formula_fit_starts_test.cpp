@@ -51,9 +51,9 @@ TEST(MagicFormulaFitStarts, TwoRunsOfTheRigGiveTheSameCoefficients) {
   ASSERT_EQ(a.groups.size(), 3u);
   ASSERT_EQ(b.groups.size(), 3u);
   for (std::size_t g = 0; g < 3; ++g) {
-    std::printf("%s: RMS %.4f%% and %.4f%% of the peak, %d starts, %.3f s and %.3f s\n",
-                a.groups[g].error.channel.c_str(), 100 * a.groups[g].error.relative_rms,
-                100 * b.groups[g].error.relative_rms, a.groups[g].starts, a.groups[g].seconds, b.groups[g].seconds);
+    std::printf("%s: RMS %.4f%% and %.4f%% of the peak, %.3f s and %.3f s\n", a.groups[g].error.channel.c_str(),
+                100 * a.groups[g].error.relative_rms, 100 * b.groups[g].error.relative_rms, a.groups[g].seconds,
+                b.groups[g].seconds);
     // The same minimum: RMS errors within 2% of each other (0.09% data changes).
     EXPECT_NEAR(a.groups[g].error.relative_rms, b.groups[g].error.relative_rms,
                 0.02 * a.groups[g].error.relative_rms)

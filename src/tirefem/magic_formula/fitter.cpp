@@ -346,7 +346,6 @@ GroupFitResult fit_coefficient_group(FitGroup group, std::span<const TyreTestPoi
       evaluations += run_levenberg_marquardt(group, all, determined, trial, trial_converged);
     double trial_sum = 0;
     for (const TyreTestPoint& p : all.points) trial_sum += std::pow(model(group, trial, p) - measured(group, p), 2);
-    ++result.starts;
     const bool trial_plausible = trial.*shape <= kMaxPlausibleShapeFactor;
     if (plausible && !trial_plausible) continue;
     if (plausible == trial_plausible && !(trial_sum < sum)) continue;

@@ -61,7 +61,6 @@ struct GroupFitResult {
   std::vector<std::string> not_determined;
   ChannelFitError error;
   int function_evaluations = 0;
-  int starts = 0;  // start values tried (the best fit is kept)
   bool converged = false;
   double seconds = 0;
 };
