@@ -46,8 +46,8 @@ void print_counters(const std::string& name, const tirefem::SolveCounters& c) {
   if (c.factor_flops > 0)
     fmt::print("  Cholesky factor       {:>8.2f} GFlop each, {:.1f} M nonzeros (fill-reducing ordering chosen by CHOLMOD)\n",
                c.factor_flops * 1e-9, c.factor_nonzeros * 1e-6);
-  fmt::print("  triangular solves     {:>8.3f} s  ({} solves, {:.1f} ms each)\n", c.solve_s, c.solves,
-             c.solves ? 1e3 * c.solve_s / c.solves : 0.0);
+  fmt::print("  triangular solves     {:>8.3f} s  ({} solves, {:.1f} ms each; {} with a single-precision factor)\n",
+             c.solve_s, c.solves, c.solves ? 1e3 * c.solve_s / c.solves : 0.0, c.single_precision_solves);
   if (c.krylov_solves + c.krylov_failures > 0)
     fmt::print("  reused factorisations {:>8}   (GMRES: {} iterations, {} given up, {:.3f} s)\n",
                c.krylov_solves, c.krylov_iterations, c.krylov_failures, c.krylov_s);

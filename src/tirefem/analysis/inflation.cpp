@@ -60,6 +60,7 @@ void add_counters(SolveCounters& to, const SolveCounters& from) {
   to.krylov_iterations += from.krylov_iterations;
   to.krylov_s += from.krylov_s;
   to.solves += from.solves;
+  to.single_precision_solves += from.single_precision_solves;
 }
 
 void add_counters(SolveCounters& c, const NewtonSolver& newton, const NonlinearProblem& problem) {
@@ -80,6 +81,7 @@ void add_counters(SolveCounters& c, const NewtonSolver& newton, const NonlinearP
   c.factor_flops = std::max(c.factor_flops, l.factor_flops);
   c.factor_nonzeros = std::max(c.factor_nonzeros, l.factor_nonzeros);
   c.solves += l.solves;
+  c.single_precision_solves += l.single_precision_solves;
   c.assemblies += problem.stats().assemblies;
   c.assembly_s += problem.stats().assembly_s;
 }

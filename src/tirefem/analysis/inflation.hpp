@@ -32,6 +32,7 @@ struct SolveCounters {
   double factor_flops = 0.0;  // of one Cholesky factorisation (0: none done)
   double factor_nonzeros = 0.0;  // in its factor L
   int solves = 0;                // triangular solves (forward and backward), GMRES's included
+  int single_precision_solves = 0;  // of them, with a Cholesky factor in single precision
 };
 
 // Adds the work of a Newton solver and its problem (iterations, factorisations, times) to c.

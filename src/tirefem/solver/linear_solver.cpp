@@ -1,6 +1,7 @@
 #include "tirefem/solver/linear_solver.hpp"
 
 #include "tirefem/solver/blas_kernel.hpp"
+#include "tirefem/solver/single_precision_factor.hpp"
 
 #include <algorithm>
 #include <array>
@@ -26,6 +27,15 @@ std::mutex& ordering_mutex() {
   static std::mutex m;
   return m;
 }
+
+// Eigen's CHOLMOD supernodal Cholesky with its factor readable (for SinglePrecisionFactor).
+class CholeskyFactor : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> {
+ public:
+  const cholmod_factor* factor() const { return m_cholmodFactor; }
+};
+
+// GMRES to at least this (relative) tolerance is preconditioned by the Cholesky factor in single precision.
+constexpr double kSinglePrecisionTolerance = 1e-4;
 }  // namespace
 
 struct SparseDirectSolver::Impl {
@@ -50,7 +60,9 @@ struct SparseDirectSolver::Impl {
   int symmetric_part_successes = 0;   // in a row at symmetric_part_shift
   bool holds_symmetric_part = false;  // the Cholesky factorisation held is of the symmetric part
   int symmetric_part_iterations = 0;  // GMRES iterations of the solve that made its factorisation
-  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholesky;
+  CholeskyFactor cholesky;
+  SinglePrecisionFactor single;  // of the Cholesky factor held, made when first needed
+  bool single_current = false;
   Eigen::UmfPackLU<SparseMatrix> lu;
 };
 
@@ -102,6 +114,7 @@ void SparseDirectSolver::factorize(const SparseMatrix& matrix) {
     s.cholesky.factorize(matrix);
     stats_.factorization_s += seconds_since(t0);
     ++stats_.factorizations;
+    s.single_current = false;
     if (s.cholesky.info() == Eigen::Success) {
       s.cholesky_failures = 0;
       s.lu_active = false;
@@ -157,6 +170,24 @@ Eigen::VectorXd SparseDirectSolver::solve(const Eigen::VectorXd& rhs) {
   return x;
 }
 
+Eigen::VectorXd SparseDirectSolver::precondition(const Eigen::VectorXd& rhs, bool single_precision) {
+  auto& s = *impl_;
+  if (!single_precision || s.lu_active) return solve(rhs);
+  const auto t0 = std::chrono::steady_clock::now();
+  const SingleBlasThread one_thread;
+  if (!s.single_current) {
+    s.single_current = true;
+    const cholmod_factor* factor = s.cholesky.factor();
+    if (!factor || !s.single.assign(*factor)) s.single.clear();
+  }
+  if (s.single.empty()) return solve(rhs);
+  Eigen::VectorXd x = s.single.solve(rhs);
+  stats_.solve_s += seconds_since(t0);
+  ++stats_.solves;
+  ++stats_.single_precision_solves;
+  return x;
+}
+
 bool SparseDirectSolver::has_factorization() const { return impl_->factorized; }
 bool SparseDirectSolver::holds_symmetric_part() const { return impl_->holds_symmetric_part; }
 int SparseDirectSolver::symmetric_part_iterations() const {
@@ -190,6 +221,7 @@ bool SparseDirectSolver::factorize_cholesky(const SparseMatrix& matrix, double r
   }
   const auto t0 = std::chrono::steady_clock::now();
   s.cholesky.factorize(*factored);
+  s.single_current = false;
   stats_.factorization_s += seconds_since(t0);
   ++stats_.factorizations;
   if (s.cholesky.info() != Eigen::Success) {
@@ -256,7 +288,10 @@ constexpr double kMaxTrueResidual = 0.1;  // of a preconditioned GMRES solution,
 class FactorizationPreconditioner {
  public:
   FactorizationPreconditioner() = default;
-  void bind(SparseDirectSolver* solver) { solver_ = solver; }
+  void bind(SparseDirectSolver* solver, bool single_precision) {
+    solver_ = solver;
+    single_precision_ = single_precision;
+  }
   template <class M>
   FactorizationPreconditioner& analyzePattern(const M&) { return *this; }
   template <class M>
@@ -264,11 +299,12 @@ class FactorizationPreconditioner {
   template <class M>
   FactorizationPreconditioner& compute(const M&) { return *this; }
   template <class Rhs>
-  Eigen::VectorXd solve(const Rhs& b) const { return solver_->solve(Eigen::VectorXd(b)); }
+  Eigen::VectorXd solve(const Rhs& b) const { return solver_->precondition(Eigen::VectorXd(b), single_precision_); }
   Eigen::ComputationInfo info() { return Eigen::Success; }
 
  private:
   SparseDirectSolver* solver_ = nullptr;
+  bool single_precision_ = false;
 };
 }  // namespace
 
@@ -278,7 +314,7 @@ template <class Matrix, class Operand>
 bool gmres_on_factorization(const Operand& matrix, SparseDirectSolver* solver, const Eigen::VectorXd& rhs,
                             Eigen::VectorXd& x, double tolerance, int max_iterations, int& iterations) {
   Eigen::GMRES<Matrix, FactorizationPreconditioner> gmres;
-  gmres.preconditioner().bind(solver);
+  gmres.preconditioner().bind(solver, tolerance >= kSinglePrecisionTolerance);
   gmres.set_restart(max_iterations);
   gmres.setMaxIterations(max_iterations);
   gmres.setTolerance(tolerance);
