@@ -173,7 +173,7 @@ TEST(CaseReaderRolling, UnknownKeysSayDidYouMean) {
   text = state("{ state = \"given_slip\", slipp = 0.1 }");
   EXPECT_EQ(error_of(text), where(text, "slipp") +
                                 "rolling[0].states[0].slipp: unknown key; expected one of: state, name, slip, "
-                                "slip_angle, camber (did you mean 'slip'?)");
+                                "slip_angle, camber, hold (did you mean 'slip'?)");
   text = state("{ stat = \"free\" }");
   EXPECT_EQ(error_of(text), where(text, "stat =") +
                                 "rolling[0].states[0].stat: unknown key; expected one of: state, name, slip, "
@@ -203,13 +203,13 @@ TEST(CaseReaderRolling, KeysOfAnotherStateAreErrors) {
   text = state("{ state = \"free\", wheel = \"locked\" }");
   EXPECT_EQ(error_of(text), where(text, "wheel") +
                                 "rolling[0].states[0].wheel: not allowed in a \"free\" state (it takes state, "
-                                "name, slip_angle and camber)");
+                                "name, slip_angle, camber and hold)");
   EXPECT_CONTAINS(error_of(state("{ state = \"given_slip\", slip = 0.1, rolling_radius = 280.0 }")),
                   "rolling[0].states[0].rolling_radius: not allowed in a \"given_slip\" state (it takes "
-                  "state, name, slip, slip_angle and camber)");
+                  "state, name, slip, slip_angle, camber and hold)");
   EXPECT_CONTAINS(error_of(state("{ state = \"given_radius\", rolling_radius = 280.0, slip = 0.1 }")),
                   "rolling[0].states[0].slip: not allowed in a \"given_radius\" state (it takes state, name, "
-                  "rolling_radius, slip_angle and camber)");
+                  "rolling_radius, slip_angle, camber and hold)");
   EXPECT_CONTAINS(error_of(state("{ state = \"full_slip\", slip_angle = 2.0 }")),
                   "rolling[0].states[0].slip_angle: not allowed in a \"full_slip\" state (it takes state, name "
                   "and wheel)");
@@ -463,6 +463,21 @@ TEST(CaseReaderRollingMesh, OwnMeshInheritsTheCaseMesh) {
 
 namespace tirefem {
 namespace {
+TEST(CaseReaderRolling, AStateMayHoldTheLoad) {
+  const Case c = parse_case(rolling_with("mesh = { half_model = false }",
+                                         "states = [{ state = \"free\", camber = 2.0, hold = \"load\" }, { state = "
+                                         "\"given_slip\", slip = 0.02, hold = \"deflection\" }, { state = \"free\" }]"),
+                            "case.toml");
+  ASSERT_EQ(c.rolling[0].states.size(), 3u);
+  EXPECT_TRUE(c.rolling[0].states[0].hold_load);
+  EXPECT_FALSE(c.rolling[0].states[1].hold_load);
+  EXPECT_FALSE(c.rolling[0].states[2].hold_load);
+  EXPECT_CONTAINS(error_of(state("{ state = \"given_slip\", slip = 0.02, hold = \"axle\" }")),
+                  "rolling[0].states[0].hold");
+  EXPECT_CONTAINS(error_of(state("{ state = \"full_slip\", hold = \"load\" }")),
+                  "rolling[0].states[0].hold: not allowed in a \"full_slip\" state (it takes state, name and wheel)");
+}
+
 TEST(CaseReaderRollingSweep, HoldIsDeflectionOrLoad) {
   EXPECT_FALSE(parse_case(rolling_with("sweep = { points = 3 }"), "case.toml").rolling[0].sweep->hold_load);
   EXPECT_TRUE(parse_case(rolling_with("sweep = { points = 3, hold = \"load\" }"), "case.toml").rolling[0].sweep->hold_load);

@@ -45,6 +45,31 @@ double static_vertical_stiffness(const RollingResult& r) {
                         : lp.back().patch.Qz_N / r.deflection_mm;
 }
 
+// Holds Qz of the converged state `s` at the study's target load (RollingModel::hold_load). Free rolling
+// (`free`) then finds Rk again at the held δz (Fx = 0 there moves Qz a little in turn), at most three
+// rounds; `slip.rolling_radius` ends as the last Rk.
+void hold_state_load(RollingModel& model, const RollingStudy& study, const RollingResult& r, const FrictionLaw& law,
+                     WheelSlip& slip, bool free, RollingModel::Solved& s, const ProgressSink& progress) {
+  const double stiffness = static_vertical_stiffness(r), target = study.target_load;
+  const auto held = [&] { return std::abs(s.figures.Qz_N - target) <= study.load_tolerance * target; };
+  for (int round = 0; round < 3 && s.converged; ++round) {
+    model.hold_load(s, target, study.load_tolerance, stiffness);  // its work added to s.counts
+    if (!s.converged || !free) break;
+    std::vector<std::pair<double, double>> tried;
+    RollingSolveCounts total = s.counts;
+    s = secant_free_rolling(model, law, slip, -r.slip_stiffness_N.value_or(1e5) / *r.effective_rolling_radius_mm,
+                            tried, total, progress);
+    s.counts = total;
+    if (!tried.empty()) slip.rolling_radius = tried.back().first;
+    if (held()) break;
+  }
+  if (s.converged && !held()) {
+    s.converged = false;
+    s.failure = fmt::format("Qz = {} N not held with free rolling in three rounds (Qz {:.1f} N)", target,
+                            s.figures.Qz_N);
+  }
+}
+
 // Solves the points of a sweep in the given order (each continuing from the nearest converged state),
 // from the footprint's deflection at the start of each branch; a branch stops at its first failure (the
 // rest would start from further away).
@@ -258,7 +283,7 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
         break;
       default: break;
     }
-    const WheelSlip slip{rk, spec.slip_angle_deg * kDegree, spec.camber_deg * kDegree};
+    WheelSlip slip{rk, spec.slip_angle_deg * kDegree, spec.camber_deg * kDegree};
     RollingModel::Solved s;
     if (spec.kind == RollingStateSpec::Kind::free) {
       // Free rolling at a slip angle or camber: Fx = 0 there, from Re with the straight-ahead slope.
@@ -280,6 +305,13 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
       s.counts.factorizations += first.factorizations;
       s.counts.solves += first.solves;
       s.counts.time_s += first.time_s;
+    }
+    if (spec.hold_load && s.converged) {
+      slip.rolling_radius = rk;
+      hold_state_load(model, study, r, law, slip, spec.kind == RollingStateSpec::Kind::free, s, progress);
+      if (s.converged) state.deflection_mm = model.deflection();
+      rk = slip.rolling_radius;
+      model.set_deflection(r.deflection_mm);  // the next state at the footprint's δz again
     }
     model.fill(state, s);
     if (spec.kind == RollingStateSpec::Kind::full_slip) {

@@ -83,6 +83,7 @@ struct RollingStateResult {
   // Rk, mm, and κ = Re/Rk − 1; not defined for a spinning wheel (Rk → 0) nor Rk for a locked one (κ = −1).
   std::optional<double> rolling_radius_mm;
   std::optional<double> slip;
+  std::optional<double> deflection_mm;  // δz, where it was adjusted to hold Qz (RollingStateSpec::hold_load)
   RollingFigures figures;
   RollingSolveCounts counts;
   Eigen::VectorXd displacement;

@@ -76,6 +76,7 @@ RollingStudy tyre_test_rolling_study(const TyreTestStudy& study, std::size_t loa
       RollingStateSpec s;
       s.camber_deg = gamma;
       s.name = fmt::format("free_camber_{:g}", gamma);
+      s.hold_load = true;  // at the load, as every point of the rig but the straight-ahead free rolling
       r.states.push_back(s);
     }
   };
@@ -166,7 +167,7 @@ TyreTestResult assemble_tyre_test(const TyreTestStudy& study, double unloaded_ra
         if (!s.converged) continue;
         const Kind kind = s.spec.camber_deg != 0.0 ? Kind::camber : Kind::free;
         t.rows.push_back(row(kind, l.target_load_N, s.figures, s.slip.value_or(0.0), s.spec.slip_angle_deg,
-                             s.spec.camber_deg, r->loaded_radius_mm, re, s.counts));
+                             s.spec.camber_deg, radius(s.deflection_mm.value_or(r->deflection_mm)), re, s.counts));
       }
       for (const SweepPoint& p : r->sweep)
         t.rows.push_back(row(Kind::slip_sweep, l.target_load_N, p.figures, p.slip, p.slip_angle_deg, p.camber_deg,

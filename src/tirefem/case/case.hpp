@@ -203,6 +203,9 @@ struct RollingStateSpec {
   // the right of the heading (ISO −Y).
   double slip_angle_deg = 0.0;
   double camber_deg = 0.0;
+  // hold = "load": the deflection δz adjusted so that Qz stays at the study's target load (as a sweep's
+  // hold = "load"; free rolling then finds Rk again at each δz); not for full slip.
+  bool hold_load = false;
 };
 
 // The longitudinal force–slip curve Qy(κ): `points` slips evenly from `from` to `to`, at the footprint's

@@ -34,11 +34,11 @@ RollingStateSpec read_state(TomlFields& f, const toml::node& n, const std::strin
   const bool cornering = s.kind != Kind::full_slip;
   std::vector<std::string> keys{"state", "name"};
   if (!own.empty()) keys.emplace_back(own);
-  if (cornering) keys.insert(keys.end(), {"slip_angle", "camber"});
+  if (cornering) keys.insert(keys.end(), {"slip_angle", "camber", "hold"});
   std::string allowed = keys.front();
   for (std::size_t i = 1; i < keys.size(); ++i) allowed += (i + 1 == keys.size() ? " and " : ", ") + keys[i];
   for (auto&& [k, v] : *raw) {  // a key of another state (typos: table() below)
-    const bool angle = k.str() == "slip_angle" || k.str() == "camber";
+    const bool angle = k.str() == "slip_angle" || k.str() == "camber" || k.str() == "hold";
     if (k.str() == own || (angle && cornering) ||
         (!angle && k.str() != "slip" && k.str() != "rolling_radius" && k.str() != "wheel"))
       continue;
@@ -46,8 +46,8 @@ RollingStateSpec read_state(TomlFields& f, const toml::node& n, const std::strin
     f.fail(join(path, k.str()),
            fmt::format("not allowed in a \"{}\" state (it takes {})", kind, allowed));
   }
-  const toml::table& t = own.empty() ? f.table(n, path, {"state", "name", "slip_angle", "camber"})
-                         : cornering ? f.table(n, path, {"state", "name", own, "slip_angle", "camber"})
+  const toml::table& t = own.empty() ? f.table(n, path, {"state", "name", "slip_angle", "camber", "hold"})
+                         : cornering ? f.table(n, path, {"state", "name", own, "slip_angle", "camber", "hold"})
                                      : f.table(n, path, {"state", "name", own});
   switch (s.kind) {
     case Kind::free:
@@ -76,6 +76,7 @@ RollingStateSpec read_state(TomlFields& f, const toml::node& n, const std::strin
     f.opt_number(t, path, "camber", s.camber_deg, " (degrees)");
     if (s.slip_angle_deg != 0.0) s.name += fmt::format("_alpha_{:g}", s.slip_angle_deg);
     if (s.camber_deg != 0.0) s.name += fmt::format("_camber_{:g}", s.camber_deg);
+    if (const toml::node* h = f.get(t, path, "hold")) s.hold_load = f.choice(*h, join(path, "hold"), {"deflection", "load"}) == 1;
   }
   if (const toml::node* v = f.get(t, path, "name")) s.name = f.string(*v, join(path, "name"));
   return s;
