@@ -73,7 +73,9 @@ const RollingResult& run(Run which) {
     if (which == Run::full)
       s.states.insert(s.states.end(), {state(K::given_slip, 0.0, 2.0, "alpha+2"), state(K::given_slip, 0.0, -2.0, "alpha-2"),
                                        state(K::given_slip, 0.0, 0.0, "camber+2", 2.0),
-                                       state(K::given_slip, 0.0, 0.0, "camber-2", -2.0)});
+                                       state(K::given_slip, 0.0, 0.0, "camber-2", -2.0),
+                                       state(K::free, 0.0, 0.0, "free camber+2 held", 2.0)});
+    if (which == Run::full) s.states.back().hold_load = true;
     const Case& c = example_case();
     it = cache.emplace(which, run_rolling(tyre(which == Run::half), c.tyre, c.inflation, settings(), s)).first;
     std::printf("  rolling study '%s': %.1f s, %d factorisations, %d Newton iterations\n", it->second.name.c_str(),
@@ -137,6 +139,27 @@ TEST(Cornering, OppositeCambersMirrorTheForces) {
               a.aligning_moment_Nmm, a.overturning_moment_Nmm);
   EXPECT_LT(a.Fy_N, 0.0);
   expect_mirrored(a, b, r.loaded_radius_mm);
+}
+
+// hold = "load" on a free-rolling cambered state (as the tyre test's cambered states): Qz at the study's
+// target within its tolerance, Qy = 0 at the held δz, and the state's tread points (what its traction maps
+// show) evaluated at that δz: their forces add up to the state's figures.
+TEST(Cornering, AHeldStateIsAtTheLoadWithItsTreadPointsAtItsDeflection) {
+  const RollingResult& r = run(Run::full);
+  const RollingStateResult& s = named(r, "free camber+2 held");
+  const RollingFigures& f = s.figures;
+  std::printf("  held γ +2°: Qz %.2f N (target 3000), δz %.4f mm (footprint %.4f mm), Qy %.3f N\n", f.Qz_N,
+              s.deflection_mm.value_or(0.0), r.deflection_mm, f.Qy_N);
+  EXPECT_NEAR(f.Qz_N, 3000.0, 1e-3 * 3000.0);
+  EXPECT_LE(std::abs(f.Qy_N), 1e-4 * f.Qz_N);
+  ASSERT_TRUE(s.deflection_mm.has_value());
+  EXPECT_GT(std::abs(*s.deflection_mm - r.deflection_mm), 1e-3);  // it moved (camber changes Qz at fixed δz)
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (std::size_t q = 0; q < r.tread_points.size(); ++q) sum += s.normal[q].force + s.tangential[q].force;
+  EXPECT_NEAR(sum.z(), f.Qz_N, 1e-9 * f.Qz_N);
+  // The states solved after a held one start from the footprint's δz again: the unheld camber states
+  // before it have no deflection of their own.
+  EXPECT_FALSE(named(r, "camber+2").deflection_mm.has_value());
 }
 
 TEST(Cornering, NoPointCarriesMoreThanMuTimesItsPressure) {

@@ -311,9 +311,9 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
       hold_state_load(model, study, r, law, slip, spec.kind == RollingStateSpec::Kind::free, s, progress);
       if (s.converged) state.deflection_mm = model.deflection();
       rk = slip.rolling_radius;
-      model.set_deflection(r.deflection_mm);  // the next state at the footprint's δz again
     }
-    model.fill(state, s);
+    model.fill(state, s);  // (its tread points' states at the state's own δz)
+    if (spec.hold_load) model.set_deflection(r.deflection_mm);  // the next state at the footprint's δz again
     if (spec.kind == RollingStateSpec::Kind::full_slip) {
       if (spec.braking) state.slip = -1.0;
     } else {
