@@ -120,8 +120,8 @@ struct RollingResult {
   bool completed = false;
   std::string failure;            // why it stopped, when not completed
   StaticContactResult footprint;  // the static state at the study's load (inflation included)
-  double deflection_mm = 0.0;     // δz, held in all states
-  double loaded_radius_mm = 0.0;  // Rd: axle to support
+  double deflection_mm = 0.0;     // δz of the footprint (of every state not held at the load)
+  double loaded_radius_mm = 0.0;  // Rd: axle to support, at that δz
   double axle_z = 0.0;
   std::optional<double> effective_rolling_radius_mm;  // Re (free rolling)
   std::optional<double> slip_stiffness_N;             // dQy/dκ at κ = 0
@@ -141,6 +141,12 @@ struct RollingResult {
   std::optional<double> pneumatic_trail_over_patch_length;
   SolveCounters counters;                             // rolling phase (after the footprint)
 };
+
+// The loaded radius of a state at the deflection `deflection_mm` (one held at the load): the axle higher
+// than the footprint's by the difference of the deflections.
+inline double loaded_radius_at(const RollingResult& r, double deflection_mm) {
+  return r.loaded_radius_mm + (r.deflection_mm - deflection_mm);
+}
 
 // A converged rolling state as later states start from it: its parameters (RollingModel's: axle height /
 // Rk, tan α, γ, δz / axle height) and its displacement.

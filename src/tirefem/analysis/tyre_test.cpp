@@ -161,8 +161,7 @@ TyreTestResult assemble_tyre_test(const TyreTestStudy& study, double unloaded_ra
     t.loads.push_back(l);
     const double re = l.effective_rolling_radius_mm.value_or(std::nan(""));
     for (const RollingResult* r : series) {
-      // The axle of a held-load point sits higher by the difference of its δz to the footprint's.
-      const auto radius = [&](double deflection) { return r->loaded_radius_mm + (r->deflection_mm - deflection); };
+      const auto radius = [&](double deflection) { return loaded_radius_at(*r, deflection); };
       for (const RollingStateResult& s : r->states) {
         if (!s.converged) continue;
         const Kind kind = s.spec.camber_deg != 0.0 ? Kind::camber : Kind::free;

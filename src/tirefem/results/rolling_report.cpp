@@ -129,8 +129,7 @@ CsvTable rolling_states_table(const RollingResult& r) {
     const RollingFigures& f = s.figures;
     const auto figure = [&](double v) { return s.converged ? v : kNaN; };
     const RollingSolveCounts& c = s.counts;
-    // (A state held at the load (hold = "load") has its axle higher by the difference of its δz.)
-    const double loaded_radius = r.loaded_radius_mm + r.deflection_mm - s.deflection_mm.value_or(r.deflection_mm);
+    const double loaded_radius = loaded_radius_at(r, s.deflection_mm.value_or(r.deflection_mm));
     t.rows.push_back({static_cast<double>(s.spec.kind), or_nan(s.slip), or_nan(s.rolling_radius_mm),
                       loaded_radius, figure(f.Qz_N), figure(f.Qy_N), figure(f.Mx_Nmm),
                       figure(f.stick_area_fraction), figure(f.contact_area_mm2), figure(f.max_traction_MPa),

@@ -177,8 +177,8 @@ Eigen::VectorXd SparseDirectSolver::precondition(const Eigen::VectorXd& rhs, boo
   const SingleBlasThread one_thread;
   if (!s.single_current) {
     s.single_current = true;
-    const cholmod_factor* factor = s.cholesky.factor();
-    if (!factor || !s.single.assign(*factor)) s.single.clear();
+    if (const cholmod_factor* factor = s.cholesky.factor()) s.single.assign(*factor);  // empty if not supernodal
+    else s.single.clear();
   }
   if (s.single.empty()) return solve(rhs);
   Eigen::VectorXd x = s.single.solve(rhs);

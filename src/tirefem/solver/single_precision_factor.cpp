@@ -30,7 +30,6 @@ bool SinglePrecisionFactor::assign(const cholmod_factor& L) {
   work_.resize(n);
   below_.resize(L.maxesize);
   n_ = n;
-  supernodes_ = supernodes;
   return true;
 }
 
@@ -41,7 +40,8 @@ Eigen::VectorXd SinglePrecisionFactor::solve(const Eigen::VectorXd& b) const {
   for (int k = 0; k < n_; ++k) work_[k] = static_cast<float>(b[permutation_[k]]);
   const int one = 1;
   const float plus = 1.0f, minus = -1.0f, zero = 0.0f;
-  for (int s = 0; s < supernodes_; ++s) {  // L y = P b
+  const int supernodes = static_cast<int>(first_column_.size()) - 1;
+  for (int s = 0; s < supernodes; ++s) {  // L y = P b
     const int k1 = first_column_[s], columns = first_column_[s + 1] - k1;
     const int rows = row_start_[s + 1] - row_start_[s], below = rows - columns;
     const float* l = values_.data() + value_start_[s];
@@ -51,7 +51,7 @@ Eigen::VectorXd SinglePrecisionFactor::solve(const Eigen::VectorXd& b) const {
     const int* r = rows_.data() + row_start_[s] + columns;
     for (int i = 0; i < below; ++i) work_[r[i]] -= below_[i];
   }
-  for (int s = supernodes_ - 1; s >= 0; --s) {  // Lᵀ z = y
+  for (int s = supernodes - 1; s >= 0; --s) {  // Lᵀ z = y
     const int k1 = first_column_[s], columns = first_column_[s + 1] - k1;
     const int rows = row_start_[s + 1] - row_start_[s], below = rows - columns;
     const float* l = values_.data() + value_start_[s];

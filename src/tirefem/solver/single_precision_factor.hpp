@@ -23,8 +23,8 @@ class SinglePrecisionFactor {
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
 
  private:
-  int n_ = 0, supernodes_ = 0;
-  std::vector<int> permutation_, first_column_, row_start_, value_start_, rows_;
+  int n_ = 0;
+  std::vector<int> permutation_, first_column_, row_start_, value_start_, rows_;  // first_column_: supernodes + 1
   std::vector<float> values_;
   mutable std::vector<float> work_, below_;  // the permuted vector; a supernode's rows below its diagonal block
 };
