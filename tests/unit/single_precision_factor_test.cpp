@@ -1,39 +1,14 @@
 // GMRES's preconditioner with the Cholesky factor in single precision (SinglePrecisionFactor, through
 // SparseDirectSolver::precondition): the supernodal solve with CHOLMOD's permutation must give CHOLMOD's
-// own solution to single precision, serve GMRES to loose tolerances only, and leave an LU's solves exact.
+// own solution to single precision, serve GMRES to loose tolerances only, and leave
+// UMFPACK's LU solves exact (CholeskySchurLU's: cholesky_schur_lu_test.cpp).
 #include <gtest/gtest.h>
 
-#include <cmath>
-#include <vector>
-
 #include "tirefem/solver/linear_solver.hpp"
+#include "test_matrices.hpp"
 
 namespace tirefem {
 namespace {
-
-// The 5-point Laplacian of an m × m grid plus `shift` on the diagonal, each row and column scaled by
-// `scale`(i) (a symmetric positive definite matrix with supernodes, a fill-reducing permutation and, with
-// a scale varying over decades, entries of very different sizes, as the shell's bending and membrane ones).
-SparseMatrix scaled_grid_laplacian(int m, double shift, double decades) {
-  const int n = m * m;
-  const auto scale = [&](int i) { return std::pow(10.0, decades * i / (n - 1.0)); };
-  std::vector<Eigen::Triplet<double>> t;
-  for (int i = 0; i < m; ++i)
-    for (int j = 0; j < m; ++j) {
-      const int k = i * m + j;
-      t.emplace_back(k, k, (4.0 + shift) * scale(k) * scale(k));
-      for (const auto [di, dj] : {std::pair{1, 0}, std::pair{0, 1}})
-        if (i + di < m && j + dj < m) {
-          const int l = (i + di) * m + j + dj;
-          t.emplace_back(k, l, -scale(k) * scale(l));
-          t.emplace_back(l, k, -scale(k) * scale(l));
-        }
-    }
-  SparseMatrix a(n, n);
-  a.setFromTriplets(t.begin(), t.end());
-  a.makeCompressed();
-  return a;
-}
 
 TEST(SinglePrecisionFactor, GivesTheDoubleFactorsSolutionToSinglePrecision) {
   for (const double decades : {0.0, 3.0}) {
@@ -76,13 +51,15 @@ TEST(SinglePrecisionFactor, PreconditionsLooseGmresSolvesOnlyAndFollowsEachNewFa
   EXPECT_LT((nearby * x - b).norm(), 1e-4 * b.norm());
 }
 
-TEST(SinglePrecisionFactor, AnLuServesInDoublePrecision) {
-  // Unsymmetric: UMFPACK's LU, whose solves stay exact whatever GMRES asks for.
+TEST(SinglePrecisionFactor, UmfpacksLuServesInDoublePrecision) {
+  // Unsymmetric everywhere (each row coupled to the next node, as no tangent of the tyre is): UMFPACK's
+  // LU, whose solves stay exact whatever GMRES asks for.
   SparseMatrix a = scaled_grid_laplacian(20, 0.05, 0.0);
-  a.coeffRef(0, 1) = -1.5;
+  for (int i = 0; i + 1 < a.rows(); ++i) a.coeffRef(i, i + 1) -= 0.3;
   const Eigen::VectorXd b = Eigen::VectorXd::Ones(a.rows());
   SparseDirectSolver solver(false);
   solver.factorize(a);
+  EXPECT_EQ(solver.stats().schur_factorizations, 0);
   EXPECT_LT((a * solver.precondition(b, true) - b).norm(), 1e-12 * b.norm());
   EXPECT_EQ(solver.stats().single_precision_solves, 0);
 }

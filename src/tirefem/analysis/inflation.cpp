@@ -55,6 +55,9 @@ void add_counters(SolveCounters& to, const SolveCounters& from) {
   to.failed_cholesky += from.failed_cholesky;
   to.shifted_factorizations += from.shifted_factorizations;
   to.symmetric_part_factorizations += from.symmetric_part_factorizations;
+  to.schur_factorizations += from.schur_factorizations;
+  to.failed_schur += from.failed_schur;
+  to.schur_block = std::max(to.schur_block, from.schur_block);
   to.krylov_solves += from.krylov_solves;
   to.krylov_failures += from.krylov_failures;
   to.krylov_iterations += from.krylov_iterations;
@@ -74,6 +77,9 @@ void add_counters(SolveCounters& c, const NewtonSolver& newton, const NonlinearP
   c.failed_cholesky += l.failed_cholesky;
   c.shifted_factorizations += l.shifted_factorizations;
   c.symmetric_part_factorizations += l.symmetric_part_factorizations;
+  c.schur_factorizations += l.schur_factorizations;
+  c.failed_schur += l.failed_schur;
+  c.schur_block = std::max(c.schur_block, l.schur_block);
   c.krylov_solves += l.krylov_solves;
   c.krylov_failures += l.krylov_failures;
   c.krylov_iterations += l.krylov_iterations;

@@ -25,6 +25,9 @@ struct SolveCounters {
   int failed_cholesky = 0;         // factorisations that found the tangent indefinite
   int shifted_factorizations = 0;  // Cholesky with an inertia shift
   int symmetric_part_factorizations = 0;  // Cholesky of an unsymmetric tangent's symmetric part
+  int schur_factorizations = 0;  // LUs by CholeskySchurLU (the rest of the LUs: UMFPACK's)
+  int failed_schur = 0;          // its attempts that found the symmetric rest indefinite
+  int schur_block = 0;           // the largest unsymmetric block it factorised
   int krylov_solves = 0;      // Newton systems solved by GMRES on a reused factorisation
   int krylov_failures = 0;
   int krylov_iterations = 0;

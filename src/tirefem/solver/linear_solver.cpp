@@ -1,12 +1,14 @@
 #include "tirefem/solver/linear_solver.hpp"
 
 #include "tirefem/solver/blas_kernel.hpp"
+#include "tirefem/solver/cholesky_schur_lu.hpp"
+#include "tirefem/solver/cholmod_setup.hpp"
 #include "tirefem/solver/single_precision_factor.hpp"
+#include "tirefem/solver/symmetric_part.hpp"
 
 #include <algorithm>
 #include <array>
 #include <chrono>
-#include <mutex>
 #include <stdexcept>
 
 #include <Eigen/CholmodSupport>
@@ -17,15 +19,6 @@ namespace tirefem {
 namespace {
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-// METIS (behind CHOLMOD's and UMFPACK's nested-dissection orderings) keeps its random generator in
-// globals: two analyses at the same time (studies run side by side) would race on it and get orderings
-// that differ from run to run, and so different round-off. Analyses therefore run one at a time; they
-// are done once per solver, so nothing waits long.
-std::mutex& ordering_mutex() {
-  static std::mutex m;
-  return m;
 }
 
 // Eigen's CHOLMOD supernodal Cholesky with its factor readable (for SinglePrecisionFactor).
@@ -43,17 +36,17 @@ struct SparseDirectSolver::Impl {
   bool use_lu = false;
   bool cholesky_analysed = false;
   bool lu_analysed = false;
-  bool lu_active = false;  // the last factorisation is the LU one
+  bool lu_active = false;  // the last factorisation is the LU one (UMFPACK's, or schur's when schur_active)
+  bool schur_active = false;
+  int schur_failures = 0;  // in a row
+  int schur_skips = 0;     // factorize_lu calls left to go to UMFPACK straight away
   double cholesky_shift = -1.0;  // relative shift of the Cholesky factorisation held; < 0: none held
   bool factorized = false;
   int cholesky_failures = 0;
   double last_relative_shift = 0.0;  // of factorize_inertia_corrected
   std::vector<int> diagonal_index;   // position of each diagonal entry in the matrix's value array
   SparseMatrix shifted;
-  // Unsymmetric matrices: the lower triangle of the symmetric part ½(A + Aᵀ), and for each of its entries
-  // the positions of a_ij and a_ji in A's value array (−1 where A has no such entry).
-  SparseMatrix symmetric_part;
-  std::vector<std::array<int, 2>> symmetric_part_sources;
+  SymmetricPart symmetric_part;  // of an unsymmetric matrix
   double symmetric_part_shift = 0.0;  // the relative shift of its last factorisation
   int symmetric_part_failures = 0;    // its factorisation or GMRES on it failing, in a row
   int symmetric_part_skips = 0;       // calls left to go to the LU straight away
@@ -64,6 +57,7 @@ struct SparseDirectSolver::Impl {
   SinglePrecisionFactor single;  // of the Cholesky factor held, made when first needed
   bool single_current = false;
   Eigen::UmfPackLU<SparseMatrix> lu;
+  CholeskySchurLU schur;  // the LU of a matrix unsymmetric in a small block only
 };
 
 SparseDirectSolver::SparseDirectSolver(bool symmetric) : impl_(std::make_unique<Impl>()) {
@@ -79,23 +73,8 @@ void SparseDirectSolver::analyse_cholesky(const SparseMatrix& matrix) {
   auto& s = *impl_;
   if (s.cholesky_analysed) return;
   const auto t0 = std::chrono::steady_clock::now();
-  // Fill-reducing ordering: the best (fewest flops) of minimum degree and two nested dissections. On the
-  // tyre's shell meshes nested dissection wins: 120 × 46 half model, AMD 2.2, METIS 1.77, NESDIS 1.71 GFlop
-  // per factorisation. The analysis is done once per solver, the factorisations many times.
   cholmod_common& common = s.cholesky.cholmod();
-  common.nmethods = 3;
-  common.method[0].ordering = CHOLMOD_AMD;
-  common.method[1].ordering = CHOLMOD_METIS;
-  common.method[2].ordering = CHOLMOD_NESDIS;
-  common.postorder = 1;
-  // Larger supernodes than CHOLMOD's default (nrelax 4/16/48: columns merged into a supernode when it has
-  // fewer than that many, given few enough explicit zeros): the dense BLAS kernels then work on bigger
-  // blocks. Measured on the tangent of the 120 × 46 half model (32 880 equations), standalone, best of 4:
-  // factorisation 0.28–0.34 → 0.22 s, factor 8.5 → 9.7 M entries, solve unchanged (8–9 ms); on the
-  // symmetric part of the 80 × 46 full model's rolling tangent (43 680): 0.47–0.49 → 0.39–0.44 s.
-  common.nrelax[0] = 8;
-  common.nrelax[1] = 64;
-  common.nrelax[2] = 256;
+  use_tyre_factor_settings(common);
   {
     const std::lock_guard lock(ordering_mutex());
     s.cholesky.analyzePattern(matrix);
@@ -118,6 +97,7 @@ void SparseDirectSolver::factorize(const SparseMatrix& matrix) {
     if (s.cholesky.info() == Eigen::Success) {
       s.cholesky_failures = 0;
       s.lu_active = false;
+      s.schur_active = false;
       s.factorized = true;
       s.cholesky_shift = 0.0;
       return;
@@ -131,6 +111,8 @@ void SparseDirectSolver::factorize(const SparseMatrix& matrix) {
 
 void SparseDirectSolver::factorize_lu(const SparseMatrix& matrix) {
   auto& s = *impl_;
+  s.schur_active = false;
+  if (!s.symmetric && factorize_schur(matrix)) return;
   if (!s.lu_analysed) {
     // No iterative refinement in UMFPACK's solve: it triples the cost of each solve, and Newton (or
     // GMRES around a reused factorisation) corrects the residual anyway.
@@ -158,13 +140,49 @@ void SparseDirectSolver::factorize_lu(const SparseMatrix& matrix) {
   if (s.lu.info() != Eigen::Success) throw std::runtime_error("the tangent stiffness matrix is singular");
 }
 
+bool SparseDirectSolver::factorize_schur(const SparseMatrix& matrix) {
+  auto& s = *impl_;
+  // After n failures in a row (A_VV indefinite: an iterate far from a stable state), the next 2ⁿ − 1
+  // LUs go to UMFPACK straight away; a success resets n.
+  if (s.schur_skips > 0) {
+    --s.schur_skips;
+    return false;
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  const int analyses = s.schur.analyses();
+  const CholeskySchurLU::Outcome outcome = s.schur.factorize(matrix);
+  if (outcome == CholeskySchurLU::Outcome::not_applicable) return false;
+  stats_.factorization_s += seconds_since(t0);
+  stats_.schur_analyses += s.schur.analyses() - analyses;
+  ++stats_.factorizations;
+  if (outcome == CholeskySchurLU::Outcome::failed) {
+    ++stats_.failed_schur;
+    s.schur_failures = std::min(s.schur_failures + 1, kMaxSymmetricPartBackoff);
+    s.schur_skips = (1 << s.schur_failures) - 1;
+    return false;
+  }
+  s.schur_failures = 0;
+  ++stats_.schur_factorizations;
+  stats_.schur_flops = s.schur.factor_flops();
+  stats_.schur_block = s.schur.unsymmetric_equations();
+  stats_.used_lu = true;
+  s.lu_active = true;
+  s.schur_active = true;
+  s.cholesky_shift = -1.0;
+  s.holds_symmetric_part = false;
+  s.factorized = true;
+  return true;
+}
+
 Eigen::VectorXd SparseDirectSolver::solve(const Eigen::VectorXd& rhs) {
   const auto t0 = std::chrono::steady_clock::now();
   // One BLAS thread: measured with the load curve of the example (120 × 46 half model, 2 cores), a
   // CHOLMOD solve took 10 ms on one thread against 16 ms on two (the factorisations as fast on either).
   const SingleBlasThread one_thread;
-  Eigen::VectorXd x = impl_->lu_active ? Eigen::VectorXd(impl_->lu.solve(rhs))
-                                    : Eigen::VectorXd(impl_->cholesky.solve(rhs));
+  auto& s = *impl_;
+  Eigen::VectorXd x = s.schur_active ? s.schur.solve(rhs)
+                      : s.lu_active  ? Eigen::VectorXd(s.lu.solve(rhs))
+                                     : Eigen::VectorXd(s.cholesky.solve(rhs));
   stats_.solve_s += seconds_since(t0);
   ++stats_.solves;
   return x;
@@ -172,9 +190,16 @@ Eigen::VectorXd SparseDirectSolver::solve(const Eigen::VectorXd& rhs) {
 
 Eigen::VectorXd SparseDirectSolver::precondition(const Eigen::VectorXd& rhs, bool single_precision) {
   auto& s = *impl_;
-  if (!single_precision || s.lu_active) return solve(rhs);
+  if (!single_precision || (s.lu_active && !s.schur_active)) return solve(rhs);
   const auto t0 = std::chrono::steady_clock::now();
   const SingleBlasThread one_thread;
+  if (s.schur_active) {
+    Eigen::VectorXd x = s.schur.solve_single_precision(rhs);
+    stats_.solve_s += seconds_since(t0);
+    ++stats_.solves;
+    ++stats_.single_precision_solves;
+    return x;
+  }
   if (!s.single_current) {
     s.single_current = true;
     if (const cholmod_factor* factor = s.cholesky.factor()) s.single.assign(*factor);  // empty if not supernodal
@@ -234,6 +259,7 @@ bool SparseDirectSolver::factorize_cholesky(const SparseMatrix& matrix, double r
   s.holds_symmetric_part = false;
   s.factorized = true;
   s.lu_active = false;
+  s.schur_active = false;
   s.cholesky_shift = relative_shift;
   return true;
 }
@@ -252,33 +278,6 @@ double SparseDirectSolver::factorize_inertia_corrected(const SparseMatrix& matri
   }
   s.last_relative_shift = shift;
   return shift;
-}
-
-void SparseDirectSolver::update_symmetric_part(const SparseMatrix& matrix) {
-  auto& s = *impl_;
-  const auto position = [&](int row, int col) {  // of a_row,col in A's value array, or −1
-    const int* begin = matrix.innerIndexPtr() + matrix.outerIndexPtr()[col];
-    const int* end = matrix.innerIndexPtr() + matrix.outerIndexPtr()[col + 1];
-    const int* it = std::lower_bound(begin, end, row);
-    return it != end && *it == row ? static_cast<int>(it - matrix.innerIndexPtr()) : -1;
-  };
-  if (s.symmetric_part.rows() != matrix.rows() || s.symmetric_part_sources.empty()) {
-    const SparseMatrix transposed = matrix.transpose();
-    s.symmetric_part = SparseMatrix(matrix + transposed).triangularView<Eigen::Lower>();
-    s.symmetric_part.makeCompressed();
-    s.symmetric_part_sources.resize(s.symmetric_part.nonZeros());
-    for (int j = 0; j < s.symmetric_part.cols(); ++j)
-      for (int k = s.symmetric_part.outerIndexPtr()[j]; k < s.symmetric_part.outerIndexPtr()[j + 1]; ++k) {
-        const int i = s.symmetric_part.innerIndexPtr()[k];
-        s.symmetric_part_sources[k] = {position(i, j), position(j, i)};
-      }
-  }
-  const double* a = matrix.valuePtr();
-  double* sym = s.symmetric_part.valuePtr();
-  for (std::size_t k = 0; k < s.symmetric_part_sources.size(); ++k) {
-    const auto [ij, ji] = s.symmetric_part_sources[k];
-    sym[k] = 0.5 * ((ij >= 0 ? a[ij] : 0.0) + (ji >= 0 ? a[ji] : 0.0));
-  }
 }
 
 namespace {
@@ -367,7 +366,7 @@ bool SparseDirectSolver::solve_by_symmetric_part(const SparseMatrix& matrix, con
     s.symmetric_part_skips = (1 << s.symmetric_part_failures) - 1;
     return false;
   };
-  update_symmetric_part(matrix);
+  s.symmetric_part.update(matrix);
   // The shift that served last (a decade lower after three successes in a row; 0 at first), then the
   // largest worth it: a symmetric part that needs more is far from positive definite (an iterate whose
   // own tangent is indefinite, or wide sliding zones) and preconditions GMRES poorly (measured at α = 2°,
@@ -375,9 +374,9 @@ bool SparseDirectSolver::solve_by_symmetric_part(const SparseMatrix& matrix, con
   const double first = s.symmetric_part_successes >= 3 && s.symmetric_part_shift >= 10 * kFirstShift
                            ? s.symmetric_part_shift / 10
                            : s.symmetric_part_shift;
-  bool factored = factorize_cholesky(s.symmetric_part, first);
+  bool factored = factorize_cholesky(s.symmetric_part.lower(), first);
   if (!factored && first < kMaxSymmetricPartShift)
-    factored = factorize_cholesky(s.symmetric_part, kMaxSymmetricPartShift);
+    factored = factorize_cholesky(s.symmetric_part.lower(), kMaxSymmetricPartShift);
   if (!factored) return failed();
   s.symmetric_part_successes = s.cholesky_shift == s.symmetric_part_shift ? s.symmetric_part_successes + 1 : 0;
   s.symmetric_part_shift = s.cholesky_shift;

@@ -1,6 +1,7 @@
 #pragma once
-// Sparse direct solver: CHOLMOD supernodal Cholesky for symmetric tangents (falls back to UMFPACK LU if
-// the matrix is not positive definite), UMFPACK for unsymmetric ones. The symbolic analysis is done on
+// Sparse direct solver: CHOLMOD supernodal Cholesky for symmetric tangents (falls back to an LU if the
+// matrix is not positive definite); for unsymmetric ones CholeskySchurLU when only a small block is
+// unsymmetric (a rolling tangent), else UMFPACK's LU. The symbolic analysis is done on
 // the first factorisation and reused, since the pattern never changes within a run.
 #include <memory>
 #include <optional>
@@ -23,6 +24,14 @@ struct LinearSolverStats {
   int failed_cholesky = 0;         // attempts that found the matrix not positive definite (counted in
                                    // factorizations too: they cost nearly as much)
   int symmetric_part_factorizations = 0;  // Cholesky of ½(A + Aᵀ) for GMRES on an unsymmetric A
+  // LUs of a matrix unsymmetric in a small block only, by CholeskySchurLU instead of UMFPACK (counted in
+  // factorizations): made, attempts that found its symmetric rest indefinite (UMFPACK then), symbolic
+  // analyses; the flops of the last and its unsymmetric block's size.
+  int schur_factorizations = 0;
+  int failed_schur = 0;
+  int schur_analyses = 0;
+  double schur_flops = 0.0;
+  int schur_block = 0;
   int krylov_solves = 0;      // successful preconditioned GMRES solves (a factorisation reused)
   int krylov_failures = 0;    // GMRES solves given up (followed by a new factorisation)
   int krylov_iterations = 0;  // over all of them
@@ -40,7 +49,8 @@ class SparseDirectSolver {
 
   // Throws std::runtime_error if the matrix is singular.
   void factorize(const SparseMatrix& matrix);
-  // An LU factorisation whatever the matrix (solve() then uses it). Throws if the matrix is singular.
+  // An LU factorisation whatever the matrix (solve() then uses it): CholeskySchurLU's when the matrix is
+  // unsymmetric in a small block only, else UMFPACK's. Throws if the matrix is singular.
   void factorize_lu(const SparseMatrix& matrix);
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
   // GMRES's preconditioner: solve(), or with `single_precision` and a Cholesky factorisation held, the
@@ -91,8 +101,8 @@ class SparseDirectSolver {
   const LinearSolverStats& stats() const { return stats_; }
 
  private:
-  void update_symmetric_part(const SparseMatrix& matrix);
-  void analyse_cholesky(const SparseMatrix& matrix);  // once: the pattern never changes
+  void analyse_cholesky(const SparseMatrix& matrix);
+  bool factorize_schur(const SparseMatrix& matrix);  // once: the pattern never changes
   struct Impl;
   std::unique_ptr<Impl> impl_;
   LinearSolverStats stats_;

@@ -11,6 +11,8 @@
 
 #include <Eigen/Core>
 
+#include "tirefem/solver/supernodal_solve.hpp"
+
 namespace tirefem {
 
 class SinglePrecisionFactor {
@@ -21,6 +23,8 @@ class SinglePrecisionFactor {
   void clear() { n_ = 0; }
   // x = A⁻¹ b, where Pᵀ L Lᵀ P = A (P: L's fill-reducing permutation).
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  // The copy, for partial substitutions (CholeskySchurLU); valid while this object is unchanged.
+  SupernodalFactorView<float> view() const;
 
  private:
   int n_ = 0;
