@@ -30,10 +30,6 @@ void print_counters(const std::string& name, const tirefem::SolveCounters& c) {
   fmt::print("  Newton iterations     {:>8}\n", c.newton_iterations);
   fmt::print("  factorisations        {:>8}   ({})\n", c.factorizations,
              c.used_lu ? "LU, CHOLMOD Cholesky" : "CHOLMOD supernodal Cholesky");
-  if (c.symmetric_part_factorizations > 0)
-    fmt::print("  of which               {:>7} Cholesky of an unsymmetric tangent's symmetric part (GMRES "
-               "preconditioners)\n",
-               c.symmetric_part_factorizations);
   if (c.schur_factorizations + c.failed_schur > 0)
     fmt::print("  of which               {:>7} LUs as Cholesky + dense LU of the unsymmetric block (up to {} "
                "equations), {} attempts that found the rest indefinite\n",

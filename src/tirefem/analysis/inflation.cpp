@@ -54,7 +54,6 @@ void add_counters(SolveCounters& to, const SolveCounters& from) {
   to.used_lu = to.used_lu || from.used_lu;
   to.failed_cholesky += from.failed_cholesky;
   to.shifted_factorizations += from.shifted_factorizations;
-  to.symmetric_part_factorizations += from.symmetric_part_factorizations;
   to.schur_factorizations += from.schur_factorizations;
   to.failed_schur += from.failed_schur;
   to.schur_block = std::max(to.schur_block, from.schur_block);
@@ -76,7 +75,6 @@ void add_counters(SolveCounters& c, const NewtonSolver& newton, const NonlinearP
   c.used_lu = c.used_lu || l.used_lu;
   c.failed_cholesky += l.failed_cholesky;
   c.shifted_factorizations += l.shifted_factorizations;
-  c.symmetric_part_factorizations += l.symmetric_part_factorizations;
   c.schur_factorizations += l.schur_factorizations;
   c.failed_schur += l.failed_schur;
   c.schur_block = std::max(c.schur_block, l.schur_block);

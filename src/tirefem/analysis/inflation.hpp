@@ -24,7 +24,6 @@ struct SolveCounters {
   bool used_lu = false;
   int failed_cholesky = 0;         // factorisations that found the tangent indefinite
   int shifted_factorizations = 0;  // Cholesky with an inertia shift
-  int symmetric_part_factorizations = 0;  // Cholesky of an unsymmetric tangent's symmetric part
   int schur_factorizations = 0;  // LUs by CholeskySchurLU (the rest of the LUs: UMFPACK's)
   int failed_schur = 0;          // its attempts that found the symmetric rest indefinite
   int schur_block = 0;           // the largest unsymmetric block it factorised

@@ -97,11 +97,6 @@ RollingModel::RollingModel(const TyreMesh& tm, const TyreDescription& tyre, cons
   // GMRES gives up after 25 iterations (then a fresh LU); measured on the 15-point sweep before the
   // refresh after 8 (NewtonSettings): 12 → 28 LUs, 41 s; 25 → 4 LUs, 31 s; 40 → 65 s.
   ns.max_krylov_iterations = 25;
-  // Longitudinal shear (the half model): a Cholesky of the tangent's symmetric part preconditions GMRES
-  // before an LU does (docs/studies/rolling-symmetric-part-preconditioner.md: on 80 × 46 a κ state 3.45 →
-  // 2.4 s, free rolling 3.7 → 1.4 s). Not with planar shear: the full model's large slip angles pass
-  // through iterates whose tangent is indefinite, and there it cost the rig time and a state.
-  ns.symmetric_part_preconditioner = shear == RollingStudy::TreadShear::longitudinal;
   newton_ = std::make_unique<NewtonSolver>(*problem_, ns);
   set_deflection(fp.final_state.deflection_mm);
   base_ = fp.final_state.displacement;

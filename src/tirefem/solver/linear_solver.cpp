@@ -4,7 +4,6 @@
 #include "tirefem/solver/cholesky_schur_lu.hpp"
 #include "tirefem/solver/cholmod_setup.hpp"
 #include "tirefem/solver/single_precision_factor.hpp"
-#include "tirefem/solver/symmetric_part.hpp"
 
 #include <algorithm>
 #include <array>
@@ -46,13 +45,6 @@ struct SparseDirectSolver::Impl {
   double last_relative_shift = 0.0;  // of factorize_inertia_corrected
   std::vector<int> diagonal_index;   // position of each diagonal entry in the matrix's value array
   SparseMatrix shifted;
-  SymmetricPart symmetric_part;  // of an unsymmetric matrix
-  double symmetric_part_shift = 0.0;  // the relative shift of its last factorisation
-  int symmetric_part_failures = 0;    // its factorisation or GMRES on it failing, in a row
-  int symmetric_part_skips = 0;       // calls left to go to the LU straight away
-  int symmetric_part_successes = 0;   // in a row at symmetric_part_shift
-  bool holds_symmetric_part = false;  // the Cholesky factorisation held is of the symmetric part
-  int symmetric_part_iterations = 0;  // GMRES iterations of the solve that made its factorisation
   CholeskyFactor cholesky;
   SinglePrecisionFactor single;  // of the Cholesky factor held, made when first needed
   bool single_current = false;
@@ -135,7 +127,6 @@ void SparseDirectSolver::factorize_lu(const SparseMatrix& matrix) {
   stats_.used_lu = true;
   s.lu_active = true;
   s.cholesky_shift = -1.0;
-  s.holds_symmetric_part = false;
   s.factorized = s.lu.info() == Eigen::Success;
   if (s.lu.info() != Eigen::Success) throw std::runtime_error("the tangent stiffness matrix is singular");
 }
@@ -157,7 +148,7 @@ bool SparseDirectSolver::factorize_schur(const SparseMatrix& matrix) {
   ++stats_.factorizations;
   if (outcome == CholeskySchurLU::Outcome::failed) {
     ++stats_.failed_schur;
-    s.schur_failures = std::min(s.schur_failures + 1, kMaxSymmetricPartBackoff);
+    s.schur_failures = std::min(s.schur_failures + 1, kMaxSchurBackoff);
     s.schur_skips = (1 << s.schur_failures) - 1;
     return false;
   }
@@ -169,7 +160,6 @@ bool SparseDirectSolver::factorize_schur(const SparseMatrix& matrix) {
   s.lu_active = true;
   s.schur_active = true;
   s.cholesky_shift = -1.0;
-  s.holds_symmetric_part = false;
   s.factorized = true;
   return true;
 }
@@ -214,10 +204,6 @@ Eigen::VectorXd SparseDirectSolver::precondition(const Eigen::VectorXd& rhs, boo
 }
 
 bool SparseDirectSolver::has_factorization() const { return impl_->factorized; }
-bool SparseDirectSolver::holds_symmetric_part() const { return impl_->holds_symmetric_part; }
-int SparseDirectSolver::symmetric_part_iterations() const {
-  return impl_->holds_symmetric_part ? impl_->symmetric_part_iterations : 0;
-}
 bool SparseDirectSolver::uses_lu() const { return impl_->use_lu; }
 double SparseDirectSolver::held_cholesky_shift() const { return impl_->cholesky_shift; }
 
@@ -256,7 +242,6 @@ bool SparseDirectSolver::factorize_cholesky(const SparseMatrix& matrix, double r
     return false;
   }
   if (relative_shift > 0) ++stats_.shifted_factorizations;
-  s.holds_symmetric_part = false;
   s.factorized = true;
   s.lu_active = false;
   s.schur_active = false;
@@ -348,46 +333,6 @@ bool SparseDirectSolver::solve_preconditioned(const SparseMatrix& matrix, const 
   ++(ok ? stats_.krylov_solves : stats_.krylov_failures);
   stats_.krylov_s += seconds_since(t0);
   return ok;
-}
-
-bool SparseDirectSolver::solve_by_symmetric_part(const SparseMatrix& matrix, const Eigen::VectorXd& rhs,
-                                                 Eigen::VectorXd& x, double tolerance, int max_iterations) {
-  auto& s = *impl_;
-  if (s.symmetric) return false;
-  // After n failures in a row, the next 2ⁿ − 1 calls go to the LU straight away (where the tangent stays
-  // far from symmetric, e.g. a slip sweep's sliding states, the failed attempts would cost more than the
-  // symmetric part saves elsewhere); a success resets n.
-  if (s.symmetric_part_skips > 0) {
-    --s.symmetric_part_skips;
-    return false;
-  }
-  const auto failed = [&] {
-    s.symmetric_part_failures = std::min(s.symmetric_part_failures + 1, kMaxSymmetricPartBackoff);
-    s.symmetric_part_skips = (1 << s.symmetric_part_failures) - 1;
-    return false;
-  };
-  s.symmetric_part.update(matrix);
-  // The shift that served last (a decade lower after three successes in a row; 0 at first), then the
-  // largest worth it: a symmetric part that needs more is far from positive definite (an iterate whose
-  // own tangent is indefinite, or wide sliding zones) and preconditions GMRES poorly (measured at α = 2°,
-  // an iterate needing σ = 1: 74 GMRES iterations for 1e-3), so the LU serves then.
-  const double first = s.symmetric_part_successes >= 3 && s.symmetric_part_shift >= 10 * kFirstShift
-                           ? s.symmetric_part_shift / 10
-                           : s.symmetric_part_shift;
-  bool factored = factorize_cholesky(s.symmetric_part.lower(), first);
-  if (!factored && first < kMaxSymmetricPartShift)
-    factored = factorize_cholesky(s.symmetric_part.lower(), kMaxSymmetricPartShift);
-  if (!factored) return failed();
-  s.symmetric_part_successes = s.cholesky_shift == s.symmetric_part_shift ? s.symmetric_part_successes + 1 : 0;
-  s.symmetric_part_shift = s.cholesky_shift;
-  s.holds_symmetric_part = true;
-  ++stats_.symmetric_part_factorizations;
-  const int before = stats_.krylov_iterations;
-  const bool ok = solve_preconditioned(matrix, rhs, x, tolerance, max_iterations);
-  s.symmetric_part_iterations = stats_.krylov_iterations - before;
-  if (!ok) return failed();
-  s.symmetric_part_failures = 0;
-  return true;
 }
 
 }  // namespace tirefem

@@ -23,7 +23,6 @@ struct LinearSolverStats {
   int shifted_factorizations = 0;  // Cholesky of an indefinite matrix with a diagonal shift
   int failed_cholesky = 0;         // attempts that found the matrix not positive definite (counted in
                                    // factorizations too: they cost nearly as much)
-  int symmetric_part_factorizations = 0;  // Cholesky of ½(A + Aᵀ) for GMRES on an unsymmetric A
   // LUs of a matrix unsymmetric in a small block only, by CholeskySchurLU instead of UMFPACK (counted in
   // factorizations): made, attempts that found its symmetric rest indefinite (UMFPACK then), symbolic
   // analyses; the flops of the last and its unsymmetric block's size.
@@ -53,15 +52,11 @@ class SparseDirectSolver {
   // unsymmetric in a small block only, else UMFPACK's. Throws if the matrix is singular.
   void factorize_lu(const SparseMatrix& matrix);
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
-  // GMRES's preconditioner: solve(), or with `single_precision` and a Cholesky factorisation held, the
-  // same solve with that factor in single precision (SinglePrecisionFactor: twice as fast, about 4e-7
-  // relative off; for GMRES to a loose tolerance).
+  // GMRES's preconditioner: solve(), or with `single_precision` and a Cholesky factorisation or a
+  // CholeskySchurLU held, the same solve with the Cholesky factor in single precision
+  // (SinglePrecisionFactor: twice as fast, about 4e-7 relative off; for GMRES to a loose tolerance).
   Eigen::VectorXd precondition(const Eigen::VectorXd& rhs, bool single_precision);
   bool has_factorization() const;
-  // The factorisation held is solve_by_symmetric_part's (of an unsymmetric matrix's symmetric part).
-  bool holds_symmetric_part() const;
-  // The GMRES iterations of the solve that made that factorisation (0 when another one is held).
-  int symmetric_part_iterations() const;
   // True when every factorisation is an LU (an unsymmetric problem, or a sticky switch after indefinite ones).
   bool uses_lu() const;
   // The relative shift σ of the Cholesky factorisation solve() uses (0: of A itself); < 0 when solve()
@@ -86,22 +81,13 @@ class SparseDirectSolver {
   // preconditioned residual does not fall below `tolerance` × its initial value within max_iterations.
   bool solve_preconditioned(const SparseMatrix& matrix, const Eigen::VectorXd& rhs, Eigen::VectorXd& x,
                             double tolerance, int max_iterations);
-  // Unsymmetric A (a rolling tangent: friction makes it unsymmetric in the patch only): GMRES on A
-  // preconditioned by a new Cholesky factorisation of its symmetric part ½(A + Aᵀ), shifted by at most
-  // kMaxSymmetricPartShift if that is indefinite; it stays held for later preconditioned solves. Both the
-  // factorisation and its solves are cheaper than UMFPACK's: on the 80 × 46 full model (43 680 equations)
-  // 0.9 s and 35 ms against 1.8 s and 230 ms, and GMRES reaches 1e-8 in 9 iterations at α = 2°.
-  // False (x undefined) when the symmetric part needs a larger shift or GMRES does not converge within
-  // max_iterations: the caller's LU serves then. After n such failures in a row the next 2ⁿ − 1 calls
-  // return false at once (n ≤ kMaxSymmetricPartBackoff).
-  static constexpr int kMaxSymmetricPartBackoff = 4;
-  static constexpr double kMaxSymmetricPartShift = 1e-4;
-  bool solve_by_symmetric_part(const SparseMatrix& matrix, const Eigen::VectorXd& rhs, Eigen::VectorXd& x,
-                               double tolerance, int max_iterations);
   const LinearSolverStats& stats() const { return stats_; }
 
  private:
   void analyse_cholesky(const SparseMatrix& matrix);
+  // factorize_lu's CholeskySchurLU attempt: after n failures in a row the next 2ⁿ − 1 LUs go to UMFPACK
+  // straight away (n ≤ kMaxSchurBackoff).
+  static constexpr int kMaxSchurBackoff = 4;
   bool factorize_schur(const SparseMatrix& matrix);  // once: the pattern never changes
   struct Impl;
   std::unique_ptr<Impl> impl_;

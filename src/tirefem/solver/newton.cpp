@@ -13,7 +13,6 @@ namespace {
 // The exact step on an indefinite tangent by GMRES on the shifted factorisation: worth trying up to this
 // shift (the roll-up cantilever's 1e-5 needed ~20 iterations); beyond it LU is cheaper.
 constexpr int kMaxExactStepIterations = 25;
-constexpr double kExactStepTolerance = 1e-8;  // of a step by GMRES that stands for a direct solve
 constexpr double kMaxShiftForKrylov = 1e-4;
 // Nearest-equilibrium steps on a tangent that a relative shift this small makes positive definite (a
 // slightly indefinite or singular one, e.g. the roll-up cantilever past 0.8 of a turn) are found by
@@ -405,16 +404,6 @@ bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du,
   const auto direct = [&] {
     if (inertia_corrected_) return solve_inertia_corrected(rhs, du);
     shift_ = 0.0;
-    // An unsymmetric tangent: its symmetric part's Cholesky and GMRES, before an LU (this solve comes when
-    // a reused factorisation no longer serves), to the same inexact-Newton tolerance as the steps that
-    // reuse it: then GMRES runs on the factor in single precision. Measured on the rolling bench (80 × 46
-    // half model, one run each after a pair): κ = 0.02 1.60 → 1.20 s, the 15-point sweep 10.2 → 9.5 s,
-    // rolling phase 14.0 / 16.1 → 13.2 / 12.0 s (two pairs), 67 → 64 Newton iterations; to 1e-8, as exactly
-    // as an LU, GMRES ran on the double factor.
-    if (settings_.reuse_factorization && settings_.symmetric_part_preconditioner &&
-        linear_.solve_by_symmetric_part(tangent, rhs, du, std::max(krylov_tolerance, kExactStepTolerance),
-                                        settings_.max_krylov_iterations))
-      return true;
     linear_.factorize(tangent);
     du = linear_.solve(rhs);
     return du.allFinite();
@@ -427,16 +416,8 @@ bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du,
     }
     // Reuse the last factorisation as a preconditioner; refactorise when that no longer converges fast.
     const int before = linear_.stats().krylov_iterations;
-    // The usual inexact-Newton tolerance on a held factorisation of the symmetric part too (the fresh one
-    // in direct() solves its own step exactly). Measured on the half model's rolling bench (80 × 46, two
-    // runs each): κ = 0.02 state 2.0–2.4 → 1.5–1.6 s, 15-point κ sweep 15.2–15.7 → 13.5–14.2 s,
-    // 17 → 13 factorisations, Newton iterations 66 → 68. The full model (cornering, the rig)
-    // does not use the symmetric part: docs/studies/rolling-symmetric-part-preconditioner.md.
     if (linear_.solve_preconditioned(tangent, rhs, du, krylov_tolerance, settings_.max_krylov_iterations)) {
-      // (A factorisation of the symmetric part needs several iterations even on its own tangent: measured
-      // against those; an LU's threshold is unchanged.)
-      refresh_ = lu && linear_.stats().krylov_iterations - before >
-                           std::max(settings_.refresh_after_krylov_iterations, 2 * linear_.symmetric_part_iterations());
+      refresh_ = lu && linear_.stats().krylov_iterations - before > settings_.refresh_after_krylov_iterations;
       // When a stable equilibrium is sought the step must descend (rhs = −R): an exact step towards a
       // saddle is replaced by the inertia-corrected one.
       const bool ascends = settings_.stable_equilibrium && problem_.has_potential() && du.dot(rhs) <= 0;

@@ -26,9 +26,6 @@ struct NewtonSettings {
   // is the current tangent factorised. Along a load path the tangent changes little between iterations
   // and steps, so most iterations cost a few triangular solves instead of a factorisation.
   bool reuse_factorization = false;
-  // Unsymmetric problems with reused factorisations: a fresh factorisation is a Cholesky of the tangent's
-  // symmetric part with GMRES (SparseDirectSolver::solve_by_symmetric_part) before an LU.
-  bool symmetric_part_preconditioner = false;
   int max_krylov_iterations = 12;
   // An LU (unsymmetric problems) that needed more GMRES iterations than this is replaced by a fresh one
   // at the next iteration: measured on the rolling sweep of the example (80 × 46), 8 gave 80 Newton
