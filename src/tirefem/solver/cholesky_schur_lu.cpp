@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include <Eigen/CholmodSupport>
@@ -101,8 +102,12 @@ bool CholeskySchurLU::Impl::find_unsymmetric(const SparseMatrix& a) {
         in_u[i] = in_u[j] = 1;
     }
   if (std::count(in_u.begin(), in_u.end(), 1) == 0) return false;
-  if (static_cast<int>(unstable.size()) == n)
-    for (int i = 0; i < n; ++i) in_u[i] = in_u[i] || unstable[i];
+  if (static_cast<int>(unstable.size()) == n) {
+    std::vector<char> with_unstable = in_u;
+    for (int i = 0; i < n; ++i) with_unstable[i] = in_u[i] || unstable[i];
+    if (std::count(with_unstable.begin(), with_unstable.end(), 1) <= kMaxUnsymmetricEquations) in_u.swap(with_unstable);
+    else unstable.clear();  // the patch has grown: its regions found so far give way
+  }
   m = static_cast<int>(std::count(in_u.begin(), in_u.end(), 1));
   return m <= kMaxUnsymmetricEquations && m < n;
 }
@@ -197,8 +202,8 @@ void CholeskySchurLU::Impl::analyse() {
   }
 }
 
-// Cholesky of M at the current σ, then σ raised tenfold while only M_UU's part fails. False when A_VV is
-// not positive definite (or σ would exceed kLargestShift).
+// Cholesky of M at the current σ, σ raised tenfold while only M_UU's part fails: `indefinite_rest` when
+// A_VV is not positive definite, `failed` when σ would exceed kLargestShift or CHOLMOD fails otherwise.
 CholeskySchurLU::Impl::Cholesky CholeskySchurLU::Impl::factorize_shifted() {
   const SparseMatrix& lower = symmetric.lower();
   if (shifted.nonZeros() != lower.nonZeros()) shifted = lower;

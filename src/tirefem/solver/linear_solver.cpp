@@ -6,7 +6,6 @@
 #include "tirefem/solver/single_precision_factor.hpp"
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <stdexcept>
 
