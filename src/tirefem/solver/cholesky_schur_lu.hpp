@@ -14,7 +14,7 @@
 // in single precision (L_VV in floats). The price is fill: U last makes S dense and the border of the
 // patch couples to all of it (18–36 GFlop per factorisation against 3.3 for UMFPACK, but at BLAS-3 speed).
 // A_VV can be indefinite (a local buckling-like mode of the static part away from the patch, in hard
-// cornering states): the region around CHOLMOD's failing column then joins U (at most three regions per
+// cornering states): the region around CHOLMOD's failing column then joins U (one region per
 // factorisation), else the caller's UMFPACK serves.
 #include <memory>
 
