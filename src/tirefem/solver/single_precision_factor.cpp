@@ -4,7 +4,7 @@ namespace tirefem {
 
 bool SinglePrecisionFactor::assign(const cholmod_factor& L) {
   n_ = 0;
-  if (!L.is_super || !L.is_ll || L.xtype != CHOLMOD_REAL || L.itype != CHOLMOD_INT || L.n == 0) return false;
+  if (view_of(L).n == 0) return false;  // not a supernodal LLᵀ factor of real entries with int indices
   const int n = static_cast<int>(L.n), supernodes = static_cast<int>(L.nsuper);
   const auto copy = [](const void* from, std::size_t count, std::vector<int>& to) {
     const int* p = static_cast<const int*>(from);
