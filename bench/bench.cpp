@@ -6,6 +6,7 @@
 //                                                             (mesh and μ of the case's first rolling study)
 //        tirefem_bench cornering [CASE.toml]                  one state at α = 2° + an 11-point α sweep on
 //                                                             the full model of that study's mesh
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -131,6 +132,7 @@ int cornering_benchmark(const std::string& file) {
   study.sweep.reset();
   study.combined.reset();
   study.angle_sweep = SlipAngleSweep{-10.0, 10.0, 11, 0.0, 0.0, false};
+  study.angle_sweep->mirror_negative_angles = true;  // as a case's sweep: α < 0 mirrored where exact
   fmt::print("tirefem cornering benchmark: {} ({} threads), {} x {} full model, {} DOF (free {}), μ = {}\n", c.title,
              omp_get_max_threads(), mesh.circumferential_elements, mesh.meridional_elements, tm.mesh.dof_count(),
              tm.mesh.dof_count() - static_cast<int>(tm.fixed_dofs.size()), study.friction);
@@ -141,7 +143,8 @@ int cornering_benchmark(const std::string& file) {
   if (!r.states.empty()) print_rolling_counts("free rolling (secant on Rk)", r.states.front().counts);
   for (std::size_t i = 1; i < r.states.size(); ++i)
     print_rolling_counts(fmt::format("one state, α = {:g}°", r.states[i].spec.slip_angle_deg), r.states[i].counts);
-  print_rolling_counts(fmt::format("α sweep, {} points", r.angle_sweep.size()), sweep);
+  const auto mirrored = std::count_if(r.angle_sweep.begin(), r.angle_sweep.end(), [](const SweepPoint& p) { return p.mirrored; });
+  print_rolling_counts(fmt::format("α sweep, {} points ({} mirrored)", r.angle_sweep.size(), mirrored), sweep);
   if (r.cornering_stiffness_N_per_deg)
     fmt::print("cornering stiffness dFy/dα {:.1f} N/deg, trail {:.2f} mm (at α = 0, ±0.2°)\n",
                *r.cornering_stiffness_N_per_deg, r.pneumatic_trail_at_zero_mm.value_or(0.0));

@@ -511,6 +511,11 @@ TEST(CaseReaderRolling, ReadsCorneringStatesAndSweeps) {
   EXPECT_TRUE(r.angle_sweep->hold_load);
   EXPECT_EQ(r.angle_sweep->slip, 0.01);
   EXPECT_EQ(r.angle_sweep->camber_deg, 1.5);
+  EXPECT_TRUE(r.angle_sweep->mirror_negative_angles) << "mirrored where exact unless the case says not";
+  const Case solved_both = parse_case(
+      rolling_with("mesh = { half_model = false }\nangle_sweep = { from = -2.0, to = 2.0, points = 3, mirror = false }"),
+      "case.toml");
+  EXPECT_FALSE(solved_both.rolling.front().angle_sweep->mirror_negative_angles);
   ASSERT_TRUE(r.combined.has_value());
   EXPECT_EQ(r.combined->slips, (std::vector<double>{-0.05, 0.05}));
   EXPECT_EQ(r.combined->slip_angles_deg, (std::vector<double>{2.0, 4.0}));
@@ -535,6 +540,8 @@ TEST(CaseReaderRolling, CorneringNeedsTheFullModelAndCamberAPlane) {
                   "rolling[0].angle_sweep.to: must be greater than from = 2 (got 1)");
   EXPECT_CONTAINS(error_of(rolling_with("mesh = { half_model = false }\ncombined = { slips = [], slip_angles = [1.0] }")),
                   "rolling[0].combined.slips: must list at least one slip κ");
+  EXPECT_CONTAINS(error_of(rolling_with("mesh = { half_model = false }\nangle_sweep = { points = 3, mirror = 1 }")),
+                  "rolling[0].angle_sweep.mirror");
   EXPECT_CONTAINS(error_of(rolling_with("tread_shear = \"lateral\"")),
                   "rolling[0].tread_shear: must be \"longitudinal\" or \"planar\"");
 }

@@ -237,8 +237,9 @@ struct SlipAngleSweep {
   SweepSpacing spacing = SweepSpacing::even;
   // Solve only α ≥ 0 and take each point at −α as the mirror image (in the wheel plane) of the point at
   // +α, where that is exact: a full model of a tyre that is its own mirror image (tyre/tyre_mesh.hpp,
-  // mirror_symmetric) at camber 0. Set by the virtual rig; not a case-file key.
-  bool mirror_negative_angles = false;
+  // mirror_symmetric) at camber 0; elsewhere every point is solved. Case file: angle_sweep.mirror
+  // (default true); the virtual rig always mirrors.
+  bool mirror_negative_angles = true;
 };
 
 // Combined slip: every (κ, α) pair of the two lists, the load held as for SlipSweep.

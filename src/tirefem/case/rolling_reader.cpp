@@ -83,8 +83,9 @@ RollingStateSpec read_state(TomlFields& f, const toml::node& n, const std::strin
 }
 
 SlipAngleSweep read_angle_sweep(TomlFields& f, const toml::node& n, const std::string& sp) {
-  const toml::table& w = f.table(n, sp, {"from", "to", "points", "hold", "slip", "camber"});
+  const toml::table& w = f.table(n, sp, {"from", "to", "points", "hold", "slip", "camber", "mirror"});
   SlipAngleSweep sw;
+  f.opt_bool(w, sp, "mirror", sw.mirror_negative_angles);
   f.opt_number(w, sp, "from", sw.from, " (slip angle, degrees)");
   f.opt_number(w, sp, "to", sw.to, " (slip angle, degrees)");
   f.opt_integer(w, sp, "points", sw.points);

@@ -58,6 +58,7 @@ toml::array points_summary(const std::vector<SweepPoint>& points, double mu) {
     insert_tyre_figures(pt, p.figures, p.slip_angle_deg, p.camber_deg, mu);
     pt.insert("newton_iterations", p.counts.newton_iterations);
     pt.insert("time_s", p.counts.time_s);
+    if (p.mirrored) pt.insert("mirrored", true);  // the mirror image of the point at −α, not solved
     a.push_back(std::move(pt));
   }
   return a;
