@@ -15,7 +15,7 @@ namespace tirefem {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-constexpr double kAngleStep = 0.02;  // largest first step in tan α (1.15°) and in γ (rad)
+constexpr double kAngleStep = 0.04;  // largest first step in tan α (2.3°) and in γ (rad)
 // hold_load's du/dδz: ∂R/∂δz by central differences over ±kRateStep (mm), solved to kRateTolerance. At a
 // fixed u the residual is smooth in δz only on a scale far below the gaps of neighbouring tread points
 // (the patch entry between two points moves with δz): measured on the 40 × 12 full model, a step of 1e-2
@@ -158,9 +158,17 @@ RollingModel::Attempt RollingModel::continuation(const FrictionLaw& law, const P
   double previous_t = 0.0;
   const Parameters p0 = from_index >= 0 ? known_[from_index].parameters : target;
   // A slip angle or camber far from the start state turns much of the patch from sticking to sliding
-  // at once: steps of at most kAngleStep in tan α and γ, doubled after an easy one. Measured on the
-  // 40 × 12 full model (Newton iterations, one step against these): α 0 → 2° 32 → 15, 0 → −4° 131 → 44,
-  // 0 → 4° 24 → 53, a combined state 66 → 98; 258 → 215 in all, the same converged states.
+  // at once: steps of at most kAngleStep in tan α and γ, doubled after an easy one. Measured first on
+  // the 40 × 12 full model with a step of 0.02 (Newton iterations, one step against these): α 0 → 2°
+  // 32 → 15, 0 → −4° 131 → 44, 0 → 4° 24 → 53, a combined state 66 → 98; 258 → 215 in all. With
+  // today's solver 0.04 (one stage up to 2.3°) against 0.02, the same converged states:
+  //  - cornering bench (80 × 46 full, rim flange): α = 2° from free rolling 13 → 8, α sweep 37 → 22;
+  //  - cornering example (80 × 24): α ±4° 13 → 7 each, camber 2° 19 → 14, combined 19 → 14, combined
+  //    sweep 14 + 12 + 12 → 9 + 6 + 6; its rolling study 89.5 → 63.9 s;
+  //  - the 80 × 46 rig's α series, 1.7–2.8° apart: at 1850 N and 3700 N 2–6 fewer per state (e.g. 3.92°
+  //    13 → 8, 14 → 10); at 5550 N 31 / 59 / 47 → 30 / 34 / 10 at 2.2° / 3.92° / 6.12°; the rig 238 → 189 s;
+  //  - the main example's quick rig (64 × 12): at 2800 N 2.5° from 0.625° 19 → 30 (its series 5.5 →
+  //    7.3 s; the example's wall time unchanged).
   const double angle_change = std::max(std::abs(target[1] - p0[1]), std::abs(target[2] - p0[2]));
   if (angle_change > kAngleStep) step = kAngleStep / angle_change;
   int cutbacks = 0;
