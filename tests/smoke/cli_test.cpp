@@ -117,7 +117,9 @@ TEST(Cli, RunWritesTheCorneringResults) {
   for (const char* key : {"\"slip_angle_deg\"", "\"camber_deg\"", "\"Fx_N\"", "\"Fy_N\"", "\"Fz_N\"",
                           "\"Mz_Nmm\"", "\"overturning_moment_Nmm\"", "\"pneumatic_trail_mm\"", "\"mu\"",
                           "\"angle_sweep\"", "\"combined\"", "\"cornering_stiffness_N_per_deg\"",
-                          "\"tread_shear\" : \"planar\""})
+                          "\"tread_shear\" : \"planar\"",
+                          // α = −2° of the sweep: the mirror image of +2° (the tyre is its own, camber 0)
+                          "\"mirrored\" : true"})
     EXPECT_NE(summary.find(key), std::string::npos) << key;
   const std::string vtu = read_text(out / "cornering/alpha_+2/tread_points.vtu");
   EXPECT_NE(vtu.find("tangential_stress_MPa"), std::string::npos);

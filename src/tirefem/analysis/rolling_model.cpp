@@ -166,7 +166,7 @@ RollingModel::Attempt RollingModel::continuation(const FrictionLaw& law, const P
   //  - cornering example (80 × 24): α ±4° 13 → 7 each, camber 2° 19 → 14, combined 19 → 14, combined
   //    sweep 14 + 12 + 12 → 9 + 6 + 6; its rolling study 89.5 → 63.9 s;
   //  - the 80 × 46 rig's α series, 1.7–2.8° apart: at 1850 N and 3700 N 2–6 fewer per state (e.g. 3.92°
-  //    13 → 8, 14 → 10); at 5550 N 31 / 59 / 47 → 30 / 34 / 10 at 2.2° / 3.92° / 6.12°; the rig 238 → 189 s;
+  //    13 → 8, 14 → 10); at 5550 N 31 / 59 / 47 → 30 / 34 / 10 at 2.2° / 3.92° / 6.12°; the rig 238 → 189–201 s;
   //  - the main example's quick rig (64 × 12): at 2800 N 2.5° from 0.625° 19 → 30 (its series 5.5 →
   //    7.3 s; the example's wall time unchanged).
   const double angle_change = std::max(std::abs(target[1] - p0[1]), std::abs(target[2] - p0[2]));
