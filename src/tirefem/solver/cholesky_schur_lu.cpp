@@ -30,10 +30,14 @@ constexpr double kAsymmetry = 1e-12;
 constexpr double kFirstShift = 1.0, kLargestShift = 1e4;  // σ
 constexpr double kMaxBlockGrowth = 1.25;  // the block ordered last may be this much larger than U
 constexpr int kUnstableRings = 2;         // see add_unstable_region
-// Regions added within one factorisation. Where one did not suffice (the cornering bench with the rim
-// flange: a wide mode in the sidewall beside the patch), a second and third did not either (four
-// rings: three regions and 4 955 equations), and each costs another factorisation.
-constexpr int kMaxUnstableRegions = 1;
+// Regions added within one factorisation, each costing another analysis and factorisation (then UMFPACK
+// serves, its first LU 2.5–5.5 s on 44k equations, and the next LU is UMFPACK's too). Measured on the
+// cornering bench (80 × 46 full, rim flange), the α sweep's first iterate at 4°: after one region the rest
+// was still indefinite, a second made it positive definite (m 2 135 → 2 850), 3.4 s for the three
+// attempts; with one region allowed that state took 16.3 s (two UMFPACK LUs and 48 of its solves), with
+// three 9.2 s, the sweep 25.5 → 16.5 s. (Earlier, with smaller first angle steps, an iterate of that
+// bench's needed more than three.)
+constexpr int kMaxUnstableRegions = 3;
 
 cholmod_sparse lower_view(const SparseMatrix& lower) {
   cholmod_sparse view = Eigen::viewAsCholmod(lower);
