@@ -266,6 +266,7 @@ double SparseDirectSolver::factorize_inertia_corrected(const SparseMatrix& matri
 
 namespace {
 constexpr double kMaxTrueResidual = 0.1;  // of a preconditioned GMRES solution, relative to the rhs
+constexpr int kMaxContinuedIterations = 4;  // see gmres_on_factorization
 
 // Eigen preconditioner interface over a factorisation made elsewhere: compute() does nothing.
 class FactorizationPreconditioner {
@@ -295,7 +296,8 @@ namespace {
 // Matrix: the sparse type GMRES works on; Operand: it or a Map of one (bound without a copy).
 template <class Matrix, class Operand>
 bool gmres_on_factorization(const Operand& matrix, SparseDirectSolver* solver, const Eigen::VectorXd& rhs,
-                            Eigen::VectorXd& x, double tolerance, int max_iterations, int& iterations) {
+                            Eigen::VectorXd& x, double tolerance, int max_iterations, int& iterations,
+                            bool continue_on_true_residual) {
   Eigen::GMRES<Matrix, FactorizationPreconditioner> gmres;
   gmres.preconditioner().bind(solver, tolerance >= kSinglePrecisionTolerance);
   gmres.set_restart(max_iterations);
@@ -309,13 +311,17 @@ bool gmres_on_factorization(const Operand& matrix, SparseDirectSolver* solver, c
   // that small while the true one is not: accept a step only if it also reduces the true residual well.
   double true_ratio = (rhs - matrix * x).norm() / rhs.norm();
   if (true_ratio <= kMaxTrueResidual) return true;
-  // Else GMRES goes on from x, within the iterations left, to reduce its preconditioned residual (its
-  // tolerance is relative to the one at its start) by as much as the true one is too large, with a
-  // margin, before the caller refactorises. Measured on the cornering bench (80 × 46 full), α = 2° from
-  // free rolling: a solve met its tolerance (1e-3) in 2 iterations with a true residual of 0.15, and the
-  // fresh LU that followed cost 1.3 s; two more iterations bring such a solve to 0.02–0.06. That state
-  // 8 → 9 Newton iterations but 3 → 2 LUs, 6.4–6.9 → 5.6 s; the α sweep 5 → 4 LUs.
-  const int left = max_iterations - iterations;
+  if (!continue_on_true_residual) return false;
+  // For a symmetric problem (a Cholesky factorisation, or an LU of an indefinite tangent) GMRES goes on from x, a few iterations at
+  // most, to cut its preconditioned residual (its tolerance is relative to the one at its start) by as
+  // much as the true one is too large, with a margin, before the caller refactorises. Measured on the
+  // load-curve bench (120 × 46 half, 20 points): 33 → 24 factorisations, 116 → 118 assemblies, 246 → 314
+  // GMRES iterations, 22.1–23.1 → 21.7–21.8 s (two alternating runs each). Not on a rolling LU: there a
+  // fresh LU's exact step is worth its cost. With the continuation (up to 25 iterations), the cornering
+  // bench's α = 2° state took 2 LUs instead of 3 (6.4 → 5.6 s), but the 80 × 46 rig's 5550 N
+  // longitudinal series 59 → 113 s (κ −0.11: 28 → 100 Newton iterations), and with at most 4 iterations
+  // 72 s: the inexact steps derail Newton in its hard, nonsmooth states.
+  const int left = std::min(max_iterations - iterations, kMaxContinuedIterations);
   if (left <= 0 || !(true_ratio < 1.0)) return false;
   const double reduction = 0.5 * kMaxTrueResidual / true_ratio;
   gmres.preconditioner().bind(solver, gmres.error() * reduction >= kSinglePrecisionTolerance);
@@ -344,9 +350,9 @@ bool SparseDirectSolver::solve_preconditioned(const SparseMatrix& matrix, const 
     const Eigen::Map<const RowMajorMatrix> rows(matrix.rows(), matrix.cols(), matrix.nonZeros(),
                                                 matrix.outerIndexPtr(), matrix.innerIndexPtr(),
                                                 matrix.valuePtr());
-    ok = gmres_on_factorization<RowMajorMatrix>(rows, this, rhs, x, tolerance, max_iterations, iterations);
+    ok = gmres_on_factorization<RowMajorMatrix>(rows, this, rhs, x, tolerance, max_iterations, iterations, true);
   } else {
-    ok = gmres_on_factorization<SparseMatrix>(matrix, this, rhs, x, tolerance, max_iterations, iterations);
+    ok = gmres_on_factorization<SparseMatrix>(matrix, this, rhs, x, tolerance, max_iterations, iterations, false);
   }
   stats_.krylov_iterations += iterations;
   ++(ok ? stats_.krylov_solves : stats_.krylov_failures);
