@@ -12,9 +12,9 @@
 // (docs/studies/cholesky-schur-lu.md): on a 43 680-equation rolling tangent, standalone, 0.6 s + 0.16 s for
 // S against UMFPACK's 1.9 s in the same process, a solve 24 ms against 40–240 ms, and GMRES on it runs
 // in single precision (L_VV in floats). The price is fill: U last makes S dense and the border of the
-// patch couples to all of it (18–36 GFlop per factorisation against 3.3 for UMFPACK, but at BLAS-3 speed).
+// patch couples to all of it (18–71 GFlop per factorisation against 3.3 for UMFPACK, but at BLAS-3 speed).
 // A_VV can be indefinite (a local buckling-like mode of the static part away from the patch, in hard
-// cornering states): the region around CHOLMOD's failing column then joins U (one region per
+// cornering states): the region around CHOLMOD's failing column then joins U (up to three regions per
 // factorisation), else the caller's UMFPACK serves.
 #include <memory>
 

@@ -312,15 +312,15 @@ bool gmres_on_factorization(const Operand& matrix, SparseDirectSolver* solver, c
   double true_ratio = (rhs - matrix * x).norm() / rhs.norm();
   if (true_ratio <= kMaxTrueResidual) return true;
   if (!continue_on_true_residual) return false;
-  // For a symmetric problem (a Cholesky factorisation, or an LU of an indefinite tangent) GMRES goes on from x, a few iterations at
-  // most, to cut its preconditioned residual (its tolerance is relative to the one at its start) by as
-  // much as the true one is too large, with a margin, before the caller refactorises. Measured on the
-  // load-curve bench (120 × 46 half, 20 points): 33 → 24 factorisations, 116 → 118 assemblies, 246 → 314
-  // GMRES iterations, 22.1–23.1 → 21.7–21.8 s (two alternating runs each). Not on a rolling LU: there a
-  // fresh LU's exact step is worth its cost. With the continuation (up to 25 iterations), the cornering
-  // bench's α = 2° state took 2 LUs instead of 3 (6.4 → 5.6 s), but the 80 × 46 rig's 5550 N
-  // longitudinal series 59 → 113 s (κ −0.11: 28 → 100 Newton iterations), and with at most 4 iterations
-  // 72 s: the inexact steps derail Newton in its hard, nonsmooth states.
+  // For a symmetric problem (a Cholesky factorisation, or an LU of an indefinite tangent) GMRES goes on
+  // from x, a few iterations at most, to cut its preconditioned residual (its tolerance is relative to the
+  // one at its start) by as much as the true one is too large, with a margin, before the caller
+  // refactorises. Measured on the load-curve bench (120 × 46 half, 20 points): 33 → 24 factorisations,
+  // 116 → 118 assemblies, 246 → 314 GMRES iterations, 22.1–23.1 → 21.7–21.8 s (two alternating runs
+  // each). Not on a rolling LU: there a fresh LU's exact step is worth its cost. With the continuation (up
+  // to 25 iterations), the cornering bench's α = 2° state took 2 LUs instead of 3 (6.4 → 5.6 s), but the
+  // 80 × 46 rig's 5550 N longitudinal series 59 → 113 s (κ −0.11: 28 → 100 Newton iterations), and with
+  // at most 4 iterations 72 s: the inexact steps derail Newton in its hard, nonsmooth states.
   const int left = std::min(max_iterations - iterations, kMaxContinuedIterations);
   if (left <= 0 || !(true_ratio < 1.0)) return false;
   const double reduction = 0.5 * kMaxTrueResidual / true_ratio;
