@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <stdexcept>
 #include <string>
 
 #include <fmt/format.h>
@@ -180,7 +181,10 @@ int main(int argc, char** argv) {
     if (argc >= 2 && std::string(argv[1]) == "rolling")
       return rolling_benchmark(argc > 2 ? argv[2] : examples + "175-70R13.toml");
     if (argc >= 2 && std::string(argv[1]) == "cornering") {
-      if (argc > 2) return cornering_benchmark(argv[2], argc > 3 ? std::stoi(argv[3]) : 0);
+      int meridional = 0;
+      if (argc > 3 && (std::sscanf(argv[3], "%d", &meridional) != 1 || meridional < 1))
+        throw std::runtime_error(fmt::format("MERIDIONAL '{}' is not a positive number of elements", argv[3]));
+      if (argc > 2) return cornering_benchmark(argv[2], meridional);
       return cornering_benchmark(examples + "175-70R13-cornering.toml", 46);
     }
   } catch (const std::exception& e) {

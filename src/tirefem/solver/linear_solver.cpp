@@ -299,17 +299,25 @@ bool gmres_on_factorization(const Operand& matrix, SparseDirectSolver* solver, c
                             Eigen::VectorXd& x, double tolerance, int max_iterations, int& iterations,
                             bool continue_on_true_residual) {
   Eigen::GMRES<Matrix, FactorizationPreconditioner> gmres;
-  gmres.preconditioner().bind(solver, tolerance >= kSinglePrecisionTolerance);
-  gmres.set_restart(max_iterations);
-  gmres.setMaxIterations(max_iterations);
-  gmres.setTolerance(tolerance);
   gmres.compute(matrix);
-  x = gmres.solve(rhs);
-  iterations = static_cast<int>(gmres.iterations());
-  if (gmres.info() != Eigen::Success || !x.allFinite()) return false;
+  // `relative` to the preconditioned residual at the start (x); `level` that tolerance relative to the
+  // rhs's, which decides whether the single-precision factor serves.
+  const auto run = [&](double relative, double level, int limit) {
+    gmres.preconditioner().bind(solver, level >= kSinglePrecisionTolerance);
+    gmres.set_restart(limit);
+    gmres.setMaxIterations(limit);
+    gmres.setTolerance(relative);
+    const Eigen::VectorXd start = x;
+    x = gmres.solveWithGuess(rhs, start);
+    iterations += static_cast<int>(gmres.iterations());
+    return gmres.info() == Eigen::Success && x.allFinite();
+  };
+  x = Eigen::VectorXd::Zero(rhs.size());
+  iterations = 0;
+  if (!run(tolerance, tolerance, max_iterations)) return false;
   // GMRES measures the preconditioned residual; a preconditioner from a very different matrix can make
   // that small while the true one is not: accept a step only if it also reduces the true residual well.
-  double true_ratio = (rhs - matrix * x).norm() / rhs.norm();
+  const double true_ratio = (rhs - matrix * x).norm() / rhs.norm();
   if (true_ratio <= kMaxTrueResidual) return true;
   if (!continue_on_true_residual) return false;
   // For a symmetric problem (a Cholesky factorisation, or an LU of an indefinite tangent) GMRES goes on
@@ -324,16 +332,8 @@ bool gmres_on_factorization(const Operand& matrix, SparseDirectSolver* solver, c
   const int left = std::min(max_iterations - iterations, kMaxContinuedIterations);
   if (left <= 0 || !(true_ratio < 1.0)) return false;
   const double reduction = 0.5 * kMaxTrueResidual / true_ratio;
-  gmres.preconditioner().bind(solver, gmres.error() * reduction >= kSinglePrecisionTolerance);
-  gmres.set_restart(left);
-  gmres.setMaxIterations(left);
-  gmres.setTolerance(reduction);
-  const Eigen::VectorXd start = x;
-  x = gmres.solveWithGuess(rhs, start);
-  iterations += static_cast<int>(gmres.iterations());
-  if (gmres.info() != Eigen::Success || !x.allFinite()) return false;
-  true_ratio = (rhs - matrix * x).norm() / rhs.norm();
-  return true_ratio <= kMaxTrueResidual;
+  if (!run(reduction, gmres.error() * reduction, left)) return false;
+  return (rhs - matrix * x).norm() <= kMaxTrueResidual * rhs.norm();
 }
 }  // namespace
 
