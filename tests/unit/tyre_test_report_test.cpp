@@ -203,5 +203,44 @@ TEST(TyreTestReport, PointCountAndStudiesPerLoad) {
   ASSERT_TRUE(ah.angle_sweep);
 }
 
+// The time left is estimated from the share of the expected work done (TyreTestProgress): a point's work
+// grows with its load, a half-model point costs a quarter, a mirror image nothing.
+TEST(TyreTestProgress, ShareOfWorkFollowsLoadModelAndMirrorImages) {
+  TyreTestStudy s;  // loads 0.5, 1, 1.5 × FNOMIN; 15 slips, 15 angles (7 of them mirror images)
+  s.name = "rig";
+  TyreTestProgress p(s, TyreTestLongitudinalModel::half);
+  EXPECT_EQ(p.work_done(), 0.0);
+  const auto finish = [&](std::size_t load, TyreTestSeries series, int points) {
+    const double before = p.work_done();
+    for (int k = 0; k < points; ++k) p.point_done(load, series);
+    return p.work_done() - before;
+  };
+  using enum TyreTestSeries;
+  // The first point of a series (footprint and free rolling) counts three; then, per solved point:
+  const double first_heavy = finish(2, lateral, 1);
+  const double alpha_heavy = finish(2, lateral, 1);  // α = 0
+  EXPECT_NEAR(first_heavy, 3 * alpha_heavy, 1e-12);
+  EXPECT_NEAR(finish(2, lateral, 7), 7 * alpha_heavy, 1e-12);  // the other 7 of the 8 angles ≥ 0
+  EXPECT_EQ(finish(2, lateral, 7), 0.0);                       // the 7 mirror images
+  finish(1, lateral, 1);
+  const double alpha_nominal = finish(1, lateral, 1);
+  EXPECT_NEAR(alpha_heavy, std::pow(1.5, 1.5) * alpha_nominal, 1e-12);
+  finish(2, longitudinal, 1);
+  const double kappa_heavy = finish(2, longitudinal, 1);  // on the half model
+  EXPECT_NEAR(kappa_heavy, 0.25 * alpha_heavy, 1e-12);
+  // Every point of the test done: all the work.
+  finish(1, lateral, 14);
+  finish(2, longitudinal, 14);
+  for (const std::size_t load : {0, 1}) finish(load, longitudinal, 16);
+  finish(0, lateral, 16);
+  EXPECT_NEAR(p.work_done(), 1.0, 1e-12);
+  // A tyre that is not its own mirror image: every angle solved, the κ series on the full model.
+  TyreTestProgress full(s, TyreTestLongitudinalModel::full);
+  for (int k = 0; k < 16; ++k) full.point_done(2, lateral);
+  for (int k = 0; k < 16; ++k) full.point_done(2, longitudinal);
+  const double heavy = full.work_done();
+  EXPECT_NEAR(heavy, 2 * std::pow(1.5, 1.5) / (2 * (std::pow(0.5, 1.5) + 1 + std::pow(1.5, 1.5))), 1e-12);
+}
+
 }  // namespace
 }  // namespace tirefem

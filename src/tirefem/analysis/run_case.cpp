@@ -290,7 +290,7 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
         r.series.push_back(tyre_test_rolling_study(s, i, series, r.mesh, r.longitudinal));
     r.starts.resize(s.load_factors.size());
     r.vertical = tyre_test_vertical_study(s);
-    r.progress = std::make_unique<TyreTestProgress>(s);
+    r.progress = std::make_unique<TyreTestProgress>(s, r.longitudinal);
   }
   std::vector<std::optional<ChainStart>> chain_starts(chains.size());
   for (RigPlan& rig : rigs) {
@@ -307,9 +307,9 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
       // The start (the lateral series' footprint and free rolling) serves the series on its mesh.
       const bool shares_start = kRigSeries[j] == TyreTestSeries::lateral || !half;
       const std::string name = "tyre test '" + s->name + "'";
-      return task(run, name, [&, run, key, r = &rig, s, i, shares_start](const ProgressSink& sink) {
+      return task(run, name, [&, run, key, r = &rig, s, i, j, shares_start](const ProgressSink& sink) {
         const auto point_done = [&] {
-          if (const std::string line = r->progress->point_done(); !line.empty()) sink(line);
+          if (const std::string line = r->progress->point_done(i, kRigSeries[j]); !line.empty()) sink(line);
         };
         const RollingStart* start = shares_start && r->starts[i] ? &*r->starts[i] : nullptr;
         runs[run].rolling = run_rolling(tyres.mesh(*s->mesh), c.tyre, c.inflation, c.contact, *s, sink,

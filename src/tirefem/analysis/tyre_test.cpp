@@ -39,18 +39,62 @@ int tyre_test_points(const TyreTestStudy& s) {
   return per_load * static_cast<int>(s.load_factors.size());
 }
 
-TyreTestProgress::TyreTestProgress(const TyreTestStudy& study)
-    : name_(study.name), total_(tyre_test_points(study)), start_(std::chrono::steady_clock::now()) {}
+namespace {
+constexpr double kLoadExponent = 1.5;    // a point's work grows as (Fz / FNOMIN)^1.5 (TyreTestProgress)
+constexpr double kHalfModelShare = 0.25;  // a half-model point's work against a full-model one's
+constexpr double kFirstPointShare = 3.0;  // a series' first point: its footprint and free rolling too
 
-std::string TyreTestProgress::point_done() {
+// The α sweep's negative angles that are mirror images of solved ones (as run_rolling pairs them).
+int mirrored_angles(const SlipAngleSweep& sweep) {
+  const std::vector<double> angles = sweep_values(sweep.from, sweep.to, sweep.points, sweep.spacing);
+  return static_cast<int>(std::count_if(angles.begin(), angles.end(), [&](double a) {
+    return a < 0 && std::any_of(angles.begin(), angles.end(), [a](double b) { return std::abs(a + b) <= 1e-12 * std::abs(a); });
+  }));
+}
+}  // namespace
+
+TyreTestProgress::TyreTestProgress(const TyreTestStudy& study, TyreTestLongitudinalModel longitudinal)
+    : name_(study.name), total_(tyre_test_points(study)), start_(std::chrono::steady_clock::now()) {
+  const bool half = longitudinal == TyreTestLongitudinalModel::half;
+  const int cambers = static_cast<int>(study.cambers_deg.size());
+  for (double factor : study.load_factors) {
+    const double load_work = std::pow(factor, kLoadExponent);
+    Series kappa, alpha;
+    kappa.points = kappa.solved = 1 + (half ? 0 : cambers) + study.slip_sweep.points;
+    kappa.weight = half ? kHalfModelShare * load_work : load_work;
+    alpha.points = 1 + (half ? cambers : 0) + study.angle_sweep.points;
+    // The rig mirrors its α sweep (camber 0) where the tyre is its own mirror image: where the κ series
+    // runs on the half model.
+    alpha.solved = alpha.points - (half ? mirrored_angles(study.angle_sweep) : 0);
+    alpha.weight = load_work;
+    for (const Series& s : {kappa, alpha}) {
+      for (int k = 0; k < s.points; ++k) total_work_ += point_work(s, k);
+      series_.push_back(s);
+    }
+  }
+}
+
+double TyreTestProgress::point_work(const Series& s, int index) {
+  if (index >= s.solved) return 0.0;
+  return index == 0 ? kFirstPointShare * s.weight : s.weight;
+}
+
+std::string TyreTestProgress::point_done(std::size_t load_index, TyreTestSeries series) {
   const std::lock_guard lock(mutex_);
+  const std::size_t j = 2 * load_index + (series == TyreTestSeries::lateral ? 1 : 0);
+  if (j < series_.size()) done_work_ += point_work(series_[j], series_[j].done++);
   const int before = 10 * done_ / total_;
   ++done_;
   if (10 * done_ / total_ == before || done_ > total_) return {};
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  const double left = elapsed / done_ * (total_ - done_);
-  return fmt::format("tyre test '{}': {} of {} points after {:.0f} s{}", name_, done_, total_, elapsed,
-                     done_ < total_ ? fmt::format(", about {:.0f} s left", left) : "");
+  const double share = std::min(done_work_ / total_work_, 1.0);
+  const std::string left = done_ < total_ && share > 0 ? fmt::format(", about {:.0f} s left", elapsed * (1 - share) / share) : "";
+  return fmt::format("tyre test '{}': {} of {} points after {:.0f} s{}", name_, done_, total_, elapsed, left);
+}
+
+double TyreTestProgress::work_done() const {
+  const std::lock_guard lock(mutex_);
+  return total_work_ > 0 ? done_work_ / total_work_ : 0.0;
 }
 
 TyreTestLongitudinalModel tyre_test_longitudinal_model(const TyreMesh& rig_full_mesh) {
