@@ -225,5 +225,64 @@ TEST(NewtonSolver, ASaddleFoundIndefiniteNearTheSolutionIsLeftWithoutRescanningI
   EXPECT_EQ(stats.failed_cholesky, 8 + 1);
 }
 
+// R(u) = K u + u³ − f on 8 DOFs: K the second-difference matrix (2, −1) plus the identity, f = 3, and a
+// skew coupling ±0.5 between the last two DOFs, so the tangent is unsymmetric (an LU, as rolling's).
+class UnsymmetricCubicForm : public Form {
+ public:
+  static constexpr int kDofs = 8;
+  void add_pattern(PatternBuilder& pattern) const override {
+    std::array<int, kDofs> dofs{};
+    for (int i = 0; i < kDofs; ++i) dofs[i] = i;
+    pattern.add_block(dofs);
+  }
+  void assemble(const FormInput& input, SparseSystem& system) const override {
+    std::array<int, kDofs> dofs{};
+    for (int i = 0; i < kDofs; ++i) dofs[i] = i;
+    using Matrix = Eigen::Matrix<double, kDofs, kDofs>;
+    using Vector = Eigen::Matrix<double, kDofs, 1>;
+    Matrix linear = Matrix::Zero();
+    for (int i = 0; i < kDofs; ++i) {
+      linear(i, i) = 3.0;
+      if (i > 0) linear(i, i - 1) = linear(i - 1, i) = -1.0;
+    }
+    linear(kDofs - 2, kDofs - 1) += 0.5;
+    linear(kDofs - 1, kDofs - 2) -= 0.5;
+    const Vector u = input.displacement.head<kDofs>();
+    const Vector r = linear * u + u.array().cube().matrix() - Vector::Constant(3.0);
+    const Matrix k = linear + Matrix((3.0 * u.array().square()).matrix().asDiagonal());
+    system.add(dofs, r, k, input.with_tangent);
+  }
+  bool symmetric() const override { return false; }
+};
+
+// An LU reused by GMRES is replaced once it needed more than refresh_after_krylov_iterations (here 0:
+// after every GMRES solve), unless the iterate's residual is already at or below refresh_above_residual:
+// near convergence the last steps run on the LU held. Fewer LUs, the same solution.
+TEST(NewtonSolver, AnLuIsNotRefreshedNearConvergence) {
+  const auto solve = [](double refresh_above_residual, Eigen::VectorXd& u) {
+    NonlinearProblem problem = problem_of<UnsymmetricCubicForm>(UnsymmetricCubicForm::kDofs);
+    NewtonSettings settings;
+    settings.reuse_factorization = true;
+    settings.refresh_after_krylov_iterations = 0;
+    settings.refresh_above_residual = refresh_above_residual;
+    NewtonSolver newton(problem, settings);
+    u = Eigen::VectorXd::Zero(UnsymmetricCubicForm::kDofs);
+    const NewtonOutcome out = newton.solve(u, 1.0);
+    EXPECT_TRUE(out.converged);
+    EXPECT_TRUE(newton.linear_stats().used_lu);
+    return std::pair{out, newton.linear_stats().factorizations};
+  };
+  Eigen::VectorXd always, near;
+  const auto [out_always, lus_always] = solve(0.0, always);
+  const auto [out_near, lus_near] = solve(1e-2, near);
+  // Every other step on a fresh LU, against none once the residual is below 1e-2.
+  EXPECT_GE(lus_always, (out_always.iterations + 1) / 2);
+  int above = 0;  // iterates above 1e-2 after the first
+  for (std::size_t k = 1; k < out_near.residual_history.size(); ++k) above += out_near.residual_history[k] > 1e-2;
+  EXPECT_LE(lus_near, 1 + above);
+  EXPECT_LT(lus_near, lus_always);
+  EXPECT_LT((near - always).norm(), 1e-8 * always.norm());
+}
+
 }  // namespace
 }  // namespace tirefem

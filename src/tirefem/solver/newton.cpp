@@ -244,7 +244,12 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
       // Newton converges to an unstable equilibrium: the step comes from an inertia-corrected
       // factorisation, whose scan need not try σ = 0 again.
       if (!solve_inertia_corrected(-r, du, SparseDirectSolver::kFirstShift)) return out;
-    } else if (!solve_linear(-r, du, fresh, eta)) return out;
+    } else {
+      refresh_allowed_ = out.relative_residual > settings_.refresh_above_residual;
+      const bool solved = solve_linear(-r, du, fresh, eta);
+      refresh_allowed_ = true;
+      if (!solved) return out;
+    }
     step_factorised = linear_.stats().factorizations > factorizations_before;
     if (shift_ > 0 || lu_mode_) near_stable = false;  // a later tangent was indefinite: test the end state
     if (shift_ > 0) last_step_shift = shift_;
@@ -410,7 +415,7 @@ bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du,
   };
   try {
     const bool lu = linear_.uses_lu();
-    if (!settings_.reuse_factorization || (lu && (fresh || refresh_))) {
+    if (!settings_.reuse_factorization || (lu && (fresh || (refresh_ && refresh_allowed_)))) {
       refresh_ = false;
       return direct();
     }
