@@ -2,7 +2,8 @@
 // it cuts the true residual tenfold. GMRES measures the preconditioned residual, which a factorisation of
 // another matrix can make small while the true one is not; for a symmetric problem GMRES then goes on a few
 // iterations towards the true residual, for an unsymmetric one (a rolling LU) the solve is given up and the
-// caller factorises afresh (docs/studies/load-curve-newton-cost.md, last section).
+// caller factorises afresh (docs/studies/load-curve-newton-cost.md, last section), unless the caller asks
+// for the continuation (near the end of a Newton solve).
 #include <gtest/gtest.h>
 
 #include "tirefem/solver/linear_solver.hpp"
@@ -50,6 +51,20 @@ TEST(GmresOnFactorization, ASymmetricSolveGoesOnAFewIterationsUntilTheTrueResidu
   // The same first solve as the LU's, then at most 4 more iterations.
   EXPECT_GT(cholesky.stats().krylov_iterations, lu.stats().krylov_iterations);
   EXPECT_LE(cholesky.stats().krylov_iterations, lu.stats().krylov_iterations + 4);
+}
+
+// Near a Newton solve's end (NewtonSettings::keep_lu_below_residual) an LU's solve goes on as well.
+TEST(GmresOnFactorization, AnUnsymmetricSolveGoesOnWhenAsked) {
+  const StaleFactorisation m;
+  SparseDirectSolver lu(false), given_up(false);
+  lu.factorize(m.factorised);
+  given_up.factorize(m.factorised);
+  Eigen::VectorXd x, x_given_up;
+  given_up.solve_preconditioned(m.solved, m.rhs, x_given_up, 1e-3, 25);
+  ASSERT_TRUE(lu.solve_preconditioned(m.solved, m.rhs, x, 1e-3, 25, /*continue_unsymmetric=*/true));
+  EXPECT_LE(m.true_residual(x), 0.1);
+  EXPECT_GT(lu.stats().krylov_iterations, given_up.stats().krylov_iterations);
+  EXPECT_LE(lu.stats().krylov_iterations, given_up.stats().krylov_iterations + 4);
 }
 
 TEST(GmresOnFactorization, NoContinuationFromASolveNoBetterThanZero) {

@@ -256,15 +256,15 @@ class UnsymmetricCubicForm : public Form {
 };
 
 // An LU reused by GMRES is replaced once it needed more than refresh_after_krylov_iterations (here 0:
-// after every GMRES solve), unless the iterate's residual is already at or below refresh_above_residual:
+// after every GMRES solve), unless the iterate's residual is already at or below keep_lu_below_residual:
 // near convergence the last steps run on the LU held. Fewer LUs, the same solution.
 TEST(NewtonSolver, AnLuIsNotRefreshedNearConvergence) {
-  const auto solve = [](double refresh_above_residual, Eigen::VectorXd& u) {
+  const auto solve = [](double keep_lu_below_residual, Eigen::VectorXd& u) {
     NonlinearProblem problem = problem_of<UnsymmetricCubicForm>(UnsymmetricCubicForm::kDofs);
     NewtonSettings settings;
     settings.reuse_factorization = true;
     settings.refresh_after_krylov_iterations = 0;
-    settings.refresh_above_residual = refresh_above_residual;
+    settings.keep_lu_below_residual = keep_lu_below_residual;
     NewtonSolver newton(problem, settings);
     u = Eigen::VectorXd::Zero(UnsymmetricCubicForm::kDofs);
     const NewtonOutcome out = newton.solve(u, 1.0);

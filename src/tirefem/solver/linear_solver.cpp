@@ -328,7 +328,8 @@ bool gmres_on_factorization(const Operand& matrix, SparseDirectSolver* solver, c
   // each). Not on a rolling LU: there a fresh LU's exact step is worth its cost. With the continuation (up
   // to 25 iterations), the cornering bench's α = 2° state took 2 LUs instead of 3 (6.4 → 5.6 s), but the
   // 80 × 46 rig's 5550 N longitudinal series 59 → 113 s (κ −0.11: 28 → 100 Newton iterations), and with
-  // at most 4 iterations 72 s: the inexact steps derail Newton in its hard, nonsmooth states.
+  // at most 4 iterations 72 s: the inexact steps derail Newton in its hard, nonsmooth states. Near a
+  // Newton solve's end (`continue_unsymmetric`: NewtonSettings::keep_lu_below_residual) it does not.
   const int left = std::min(max_iterations - iterations, kMaxContinuedIterations);
   if (left <= 0 || !(true_ratio < 1.0)) return false;
   const double reduction = 0.5 * kMaxTrueResidual / true_ratio;
@@ -338,7 +339,8 @@ bool gmres_on_factorization(const Operand& matrix, SparseDirectSolver* solver, c
 }  // namespace
 
 bool SparseDirectSolver::solve_preconditioned(const SparseMatrix& matrix, const Eigen::VectorXd& rhs,
-                                              Eigen::VectorXd& x, double tolerance, int max_iterations) {
+                                              Eigen::VectorXd& x, double tolerance, int max_iterations,
+                                              bool continue_unsymmetric) {
   if (!has_factorization()) return false;
   const auto t0 = std::chrono::steady_clock::now();
   int iterations = 0;
@@ -352,7 +354,8 @@ bool SparseDirectSolver::solve_preconditioned(const SparseMatrix& matrix, const 
                                                 matrix.valuePtr());
     ok = gmres_on_factorization<RowMajorMatrix>(rows, this, rhs, x, tolerance, max_iterations, iterations, true);
   } else {
-    ok = gmres_on_factorization<SparseMatrix>(matrix, this, rhs, x, tolerance, max_iterations, iterations, false);
+    ok = gmres_on_factorization<SparseMatrix>(matrix, this, rhs, x, tolerance, max_iterations, iterations,
+                                              continue_unsymmetric);
   }
   stats_.krylov_iterations += iterations;
   ++(ok ? stats_.krylov_solves : stats_.krylov_failures);

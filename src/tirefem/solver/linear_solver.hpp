@@ -79,8 +79,10 @@ class SparseDirectSolver {
   // Solves A x = b by GMRES preconditioned with the last factorisation (of an earlier, nearby matrix):
   // the iteration that lets load steps reuse a factorisation. Returns false (x undefined) when the
   // preconditioned residual does not fall below `tolerance` × its initial value within max_iterations.
+  // `continue_unsymmetric`: an LU's GMRES solve whose true residual is too large goes on a few iterations
+  // as a Cholesky's does (gmres_on_factorization), rather than being given up.
   bool solve_preconditioned(const SparseMatrix& matrix, const Eigen::VectorXd& rhs, Eigen::VectorXd& x,
-                            double tolerance, int max_iterations);
+                            double tolerance, int max_iterations, bool continue_unsymmetric = false);
   const LinearSolverStats& stats() const { return stats_; }
 
  private:

@@ -245,9 +245,9 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
       // factorisation, whose scan need not try σ = 0 again.
       if (!solve_inertia_corrected(-r, du, SparseDirectSolver::kFirstShift)) return out;
     } else {
-      refresh_allowed_ = out.relative_residual > settings_.refresh_above_residual;
+      near_convergence_ = out.relative_residual <= settings_.keep_lu_below_residual;
       const bool solved = solve_linear(-r, du, fresh, eta);
-      refresh_allowed_ = true;
+      near_convergence_ = false;
       if (!solved) return out;
     }
     step_factorised = linear_.stats().factorizations > factorizations_before;
@@ -415,13 +415,14 @@ bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du,
   };
   try {
     const bool lu = linear_.uses_lu();
-    if (!settings_.reuse_factorization || (lu && (fresh || (refresh_ && refresh_allowed_)))) {
+    if (!settings_.reuse_factorization || (lu && (fresh || (refresh_ && !near_convergence_)))) {
       refresh_ = false;
       return direct();
     }
     // Reuse the last factorisation as a preconditioner; refactorise when that no longer converges fast.
     const int before = linear_.stats().krylov_iterations;
-    if (linear_.solve_preconditioned(tangent, rhs, du, krylov_tolerance, settings_.max_krylov_iterations)) {
+    if (linear_.solve_preconditioned(tangent, rhs, du, krylov_tolerance, settings_.max_krylov_iterations,
+                                     near_convergence_)) {
       refresh_ = lu && linear_.stats().krylov_iterations - before > settings_.refresh_after_krylov_iterations;
       // When a stable equilibrium is sought the step must descend (rhs = −R): an exact step towards a
       // saddle is replaced by the inertia-corrected one.

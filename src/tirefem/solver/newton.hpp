@@ -32,8 +32,11 @@ struct NewtonSettings {
   // iterations and 17 s against 99 iterations and 27 s without the refresh (many-iteration inexact steps
   // also slow Newton down).
   int refresh_after_krylov_iterations = 8;
-  // ... unless the relative residual is already at or below this (0: always refresh).
-  double refresh_above_residual = 0.0;
+  // At or below this relative residual an LU is kept to the end of the solve (0: never): not refreshed
+  // after many GMRES iterations, and a GMRES solve on it that meets its tolerance with too large a true
+  // residual goes on a few iterations (as on a Cholesky) before a new LU is made. Near convergence one or
+  // two steps are left, and GMRES on the LU held costs far less than a new one.
+  double keep_lu_below_residual = 0.0;
   double krylov_tolerance = 1e-3;  // relative to the preconditioned residual (inexact Newton)
   // Eisenstat–Walker forcing terms instead of the fixed krylov_tolerance: loose (up to max_forcing_term)
   // while the residual is far from converged, tight where Newton converges fast, never tighter than the
@@ -125,7 +128,7 @@ class NewtonSolver {
   SparseDirectSolver linear_;
   int total_iterations_ = 0;
   bool refresh_ = false;  // the last reused factorisation needed many GMRES iterations: factorise next
-  bool refresh_allowed_ = true;  // the iterate's residual is above refresh_above_residual
+  bool near_convergence_ = false;  // the iterate's residual is at or below keep_lu_below_residual
   bool inertia_corrected_ = false;  // a symmetric problem: Cholesky with inertia correction
   double shift_ = 0.0;              // relative shift of the factorisation behind the last step
   bool lu_mode_ = false;  // nearest-equilibrium steps on an indefinite tangent: LU until a stable state
