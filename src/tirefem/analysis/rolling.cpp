@@ -197,6 +197,14 @@ void cornering_stiffness(RollingModel& model, const RollingStudy& study, Rolling
 
 }  // namespace
 
+std::vector<double> mirrored_angles(const std::vector<double>& angles) {
+  std::vector<double> mirrored;
+  std::copy_if(angles.begin(), angles.end(), std::back_inserter(mirrored), [&](double a) {
+    return a < 0 && std::any_of(angles.begin(), angles.end(), [a](double b) { return std::abs(a + b) <= 1e-12 * std::abs(a); });
+  });
+  return mirrored;
+}
+
 std::vector<double> sweep_values(double from, double to, int points, SweepSpacing spacing) {
   std::vector<double> v;
   for (int i = 0; i < points; ++i) {
@@ -353,13 +361,10 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
     // A tyre that is its own mirror image, at camber 0: the state at −α is the mirror image of the one at
     // +α, so only α ≥ 0 is solved (measured on the rig's 80 × 46 full model at 3700 N: Fy(−α) = −Fy(α)
     // to the printed digits when both were solved).
-    const auto paired = [&](double a) {
-      return a < 0 && std::any_of(angles.begin(), angles.end(), [a](double b) { return std::abs(a + b) <= 1e-12 * std::abs(a); });
-    };
     const bool mirror = sw.mirror_negative_angles && sw.camber_deg == 0.0 && mirror_symmetric(tm);
     if (mirror) {
-      std::copy_if(angles.begin(), angles.end(), std::back_inserter(mirrored), paired);
-      std::erase_if(angles, paired);
+      mirrored = mirrored_angles(angles);
+      std::erase_if(angles, [&](double a) { return std::find(mirrored.begin(), mirrored.end(), a) != mirrored.end(); });
       std::sort(mirrored.rbegin(), mirrored.rend());  // from α = 0 outwards, as solved
     }
     const auto targets = outward(angles, [&](double a) { return SweepTarget{sw.slip, a, sw.camber_deg}; });

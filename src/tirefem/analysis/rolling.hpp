@@ -194,6 +194,9 @@ RollingResult run_rolling(const TyreMesh& tyre_mesh, const TyreDescription& tyre
 // The `points` values of a sweep over [from, to] (SweepSpacing): evenly spaced, or each side of zero
 // quadratically denser towards it (v = end·(t/end)² for t evenly spaced; from < 0 < to keeps 0 if even).
 std::vector<double> sweep_values(double from, double to, int points, SweepSpacing spacing);
+// The negative angles of `angles` whose opposite is among them too: the points an α sweep that mirrors
+// its negative angles (SlipAngleSweep::mirror_negative_angles) takes as mirror images, not solved.
+std::vector<double> mirrored_angles(const std::vector<double>& angles);
 
 // Solves the rolling problem at the forms' current settings from u (overwritten). Two-level: the contact
 // region and the friction plan are frozen together in each outer iteration; single loop: both follow

@@ -43,14 +43,6 @@ namespace {
 constexpr double kLoadExponent = 1.5;    // a point's work grows as (Fz / FNOMIN)^1.5 (TyreTestProgress)
 constexpr double kHalfModelShare = 0.25;  // a half-model point's work against a full-model one's
 constexpr double kFirstPointShare = 3.0;  // a series' first point: its footprint and free rolling too
-
-// The α sweep's negative angles that are mirror images of solved ones (as run_rolling pairs them).
-int mirrored_angles(const SlipAngleSweep& sweep) {
-  const std::vector<double> angles = sweep_values(sweep.from, sweep.to, sweep.points, sweep.spacing);
-  return static_cast<int>(std::count_if(angles.begin(), angles.end(), [&](double a) {
-    return a < 0 && std::any_of(angles.begin(), angles.end(), [a](double b) { return std::abs(a + b) <= 1e-12 * std::abs(a); });
-  }));
-}
 }  // namespace
 
 TyreTestProgress::TyreTestProgress(const TyreTestStudy& study, TyreTestLongitudinalModel longitudinal)
@@ -65,7 +57,9 @@ TyreTestProgress::TyreTestProgress(const TyreTestStudy& study, TyreTestLongitudi
     alpha.points = 1 + (half ? cambers : 0) + study.angle_sweep.points;
     // The rig mirrors its α sweep (camber 0) where the tyre is its own mirror image: where the κ series
     // runs on the half model.
-    alpha.solved = alpha.points - (half ? mirrored_angles(study.angle_sweep) : 0);
+    const SlipAngleSweep& sweep = study.angle_sweep;
+    const auto mirrored = mirrored_angles(sweep_values(sweep.from, sweep.to, sweep.points, sweep.spacing));
+    alpha.solved = alpha.points - (half ? static_cast<int>(mirrored.size()) : 0);
     alpha.weight = load_work;
     for (const Series& s : {kappa, alpha}) {
       for (int k = 0; k < s.points; ++k) total_work_ += point_work(s, k);

@@ -244,11 +244,8 @@ NewtonOutcome NewtonSolver::solve(Eigen::VectorXd& u, double load_factor) {
       // Newton converges to an unstable equilibrium: the step comes from an inertia-corrected
       // factorisation, whose scan need not try σ = 0 again.
       if (!solve_inertia_corrected(-r, du, SparseDirectSolver::kFirstShift)) return out;
-    } else {
-      near_convergence_ = out.relative_residual <= settings_.keep_lu_below_residual;
-      const bool solved = solve_linear(-r, du, fresh, eta);
-      near_convergence_ = false;
-      if (!solved) return out;
+    } else if (!solve_linear(-r, du, fresh, eta, out.relative_residual <= settings_.keep_lu_below_residual)) {
+      return out;
     }
     step_factorised = linear_.stats().factorizations > factorizations_before;
     if (shift_ > 0 || lu_mode_) near_stable = false;  // a later tangent was indefinite: test the end state
@@ -404,7 +401,7 @@ bool NewtonSolver::solve_inertia_corrected(const Eigen::VectorXd& rhs, Eigen::Ve
 }
 
 bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du, bool fresh,
-                                double krylov_tolerance) {
+                                double krylov_tolerance, bool near_convergence) {
   const SparseMatrix& tangent = problem_.system().tangent();
   const auto direct = [&] {
     if (inertia_corrected_) return solve_inertia_corrected(rhs, du);
@@ -415,14 +412,14 @@ bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du,
   };
   try {
     const bool lu = linear_.uses_lu();
-    if (!settings_.reuse_factorization || (lu && (fresh || (refresh_ && !near_convergence_)))) {
+    if (!settings_.reuse_factorization || (lu && (fresh || (refresh_ && !near_convergence)))) {
       refresh_ = false;
       return direct();
     }
     // Reuse the last factorisation as a preconditioner; refactorise when that no longer converges fast.
     const int before = linear_.stats().krylov_iterations;
     if (linear_.solve_preconditioned(tangent, rhs, du, krylov_tolerance, settings_.max_krylov_iterations,
-                                     near_convergence_)) {
+                                     near_convergence)) {
       refresh_ = lu && linear_.stats().krylov_iterations - before > settings_.refresh_after_krylov_iterations;
       // When a stable equilibrium is sought the step must descend (rhs = −R): an exact step towards a
       // saddle is replaced by the inertia-corrected one.

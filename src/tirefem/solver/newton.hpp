@@ -106,8 +106,10 @@ class NewtonSolver {
   bool solve_with_tangent(const Eigen::VectorXd& rhs, Eigen::VectorXd& x, double tolerance);
 
  private:
-  // `fresh`: factorise the current tangent even if a reused factorisation would do.
-  bool solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du, bool fresh, double krylov_tolerance);
+  // `fresh`: factorise the current tangent even if a reused factorisation would do. `near_convergence`:
+  // the iterate's residual is at or below keep_lu_below_residual (an LU held is kept).
+  bool solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd& du, bool fresh, double krylov_tolerance,
+                    bool near_convergence = false);
   // At an unstable equilibrium (the last factorisation, of its tangent, needed a shift): moves u along
   // the direction of negative curvature to the side that lowers the energy. False when none is found.
   bool push_off_saddle(Eigen::VectorXd& u, double load_factor);
@@ -128,7 +130,6 @@ class NewtonSolver {
   SparseDirectSolver linear_;
   int total_iterations_ = 0;
   bool refresh_ = false;  // the last reused factorisation needed many GMRES iterations: factorise next
-  bool near_convergence_ = false;  // the iterate's residual is at or below keep_lu_below_residual
   bool inertia_corrected_ = false;  // a symmetric problem: Cholesky with inertia correction
   double shift_ = 0.0;              // relative shift of the factorisation behind the last step
   bool lu_mode_ = false;  // nearest-equilibrium steps on an indefinite tangent: LU until a stable state
