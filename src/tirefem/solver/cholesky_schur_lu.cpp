@@ -8,15 +8,13 @@
 #include <Eigen/CholmodSupport>
 
 #include "tirefem/solver/cholmod_setup.hpp"
+#include "tirefem/solver/mixed_precision_lu.hpp"
 #include "tirefem/solver/single_precision_factor.hpp"
 #include "tirefem/solver/supernodal_solve.hpp"
 #include "tirefem/solver/symmetric_part.hpp"
 
 extern "C" {  // the reference BLAS and LAPACK interfaces (OpenBLAS behind them)
 void dlauum_(const char* uplo, const int* n, double* a, const int* lda, int* info);
-void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* pivots, int* info);
-void dgetrs_(const char* trans, const int* n, const int* nrhs, const double* a, const int* lda, const int* pivots,
-             double* b, const int* ldb, int* info);
 }
 
 namespace tirefem {
@@ -60,8 +58,8 @@ struct CholeskySchurLU::Impl {
   double shift = kFirstShift;
   double flops = 0.0;
   bool held = false;
-  Eigen::MatrixXd schur;            // S, then its LU factors
-  std::vector<int> pivots;
+  Eigen::MatrixXd schur;            // S while it is formed
+  MixedPrecisionLU schur_lu;        // its LU
   std::vector<double> work, below;
   SinglePrecisionFactor single;
   bool single_current = false;
@@ -88,6 +86,7 @@ struct CholeskySchurLU::Impl {
   int reversed(int position_in_u) const { return m - 1 - position_in_u; }  // S's order
   void form_schur(const SparseMatrix& a);
   void solve_schur(double* y);
+  void solve_schur(float* y);
 };
 
 bool CholeskySchurLU::Impl::find_unsymmetric(const SparseMatrix& a) {
@@ -276,10 +275,14 @@ void CholeskySchurLU::Impl::form_schur(const SparseMatrix& a) {
 }
 
 void CholeskySchurLU::Impl::solve_schur(double* y) {
-  const int one = 1;
-  int info = 0;
   std::reverse(y, y + m);  // into S's order
-  dgetrs_("N", &m, &one, schur.data(), &m, pivots.data(), y, &m, &info);
+  schur_lu.solve(y);
+  std::reverse(y, y + m);
+}
+
+void CholeskySchurLU::Impl::solve_schur(float* y) {
+  std::reverse(y, y + m);
+  schur_lu.solve_single_precision(y);
   std::reverse(y, y + m);
 }
 
@@ -301,10 +304,7 @@ CholeskySchurLU::Outcome CholeskySchurLU::factorize(const SparseMatrix& a) {
     s.analyse();
   }
   s.form_schur(a);
-  s.pivots.resize(s.m);
-  int info = 0;
-  dgetrf_(&s.m, &s.m, s.schur.data(), &s.m, s.pivots.data(), &info);
-  if (info != 0) return Outcome::failed;
+  if (!s.schur_lu.factorize(std::move(s.schur))) return Outcome::failed;
   s.work.resize(s.n);
   s.held = true;
   return Outcome::factorized;
@@ -334,9 +334,7 @@ Eigen::VectorXd CholeskySchurLU::solve_single_precision(const Eigen::VectorXd& b
   const int first = s.n - s.m;
   for (int k = 0; k < s.n; ++k) s.single_work[k] = static_cast<float>(b[f.permutation[k]]);
   forward_substitute(f, s.single_work.data(), s.single_below, first);
-  for (int k = first; k < s.n; ++k) s.work[k] = s.single_work[k];
-  s.solve_schur(s.work.data() + first);
-  for (int k = first; k < s.n; ++k) s.single_work[k] = static_cast<float>(s.work[k]);
+  s.solve_schur(s.single_work.data() + first);
   back_substitute(f, s.single_work.data(), s.single_below, first);
   Eigen::VectorXd x(s.n);
   for (int k = 0; k < s.n; ++k) x[f.permutation[k]] = s.single_work[k];

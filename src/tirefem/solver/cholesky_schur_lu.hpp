@@ -8,7 +8,8 @@
 // CHOLMOD's supernodal Cholesky of the symmetric M, equal to A but for M_UU = ½(A_UU + A_UUᵀ) + σ·diag|A_UU|
 // (σ ≥ 1 keeps M positive definite), gives L_VV, L_UV and L_UU (L_UU L_UUᵀ = M_UU − L_UV L_UVᵀ), and
 //     A = [L_VV 0; L_UV I] · [I 0; 0 S] · [L_VVᵀ L_UVᵀ; 0 I],    S = L_UU L_UUᵀ + A_UU − M_UU,
-// with LAPACK's LU (partial pivoting) of the dense m × m Schur complement S. It replaces UMFPACK's LU
+// with LAPACK's LU (partial pivoting) of the dense m × m Schur complement S, in single precision and refined
+// to double accuracy in solve() (mixed_precision_lu.hpp). It replaces UMFPACK's LU
 // (docs/studies/cholesky-schur-lu.md): on a 43 680-equation rolling tangent, standalone, 0.6 s + 0.16 s for
 // S against UMFPACK's 1.9 s in the same process, a solve 24 ms against 40–240 ms, and GMRES on it runs
 // in single precision (L_VV in floats). The price is fill: U last makes S dense and the border of the
@@ -40,7 +41,8 @@ class CholeskySchurLU {
   Outcome factorize(const SparseMatrix& a);
   // x = A⁻¹ b with the factorisation held.
   Eigen::VectorXd solve(const Eigen::VectorXd& b);
-  // The same with L_VV in single precision (GMRES's preconditioner at loose tolerances), S in double.
+  // The same with L_VV and S's LU in single precision (GMRES's preconditioner at loose tolerances).
+  // (solve() refines S's single-precision LU to double accuracy: mixed_precision_lu.hpp.)
   Eigen::VectorXd solve_single_precision(const Eigen::VectorXd& b);
 
   int unsymmetric_equations() const;  // m, of the factorisation held
