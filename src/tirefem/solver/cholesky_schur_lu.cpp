@@ -58,7 +58,7 @@ struct CholeskySchurLU::Impl {
   double shift = kFirstShift;
   double flops = 0.0;
   bool held = false;
-  Eigen::MatrixXd schur;            // S while it is formed
+  Eigen::MatrixXd schur;            // S while it is formed (swapped into schur_lu, storage reused)
   MixedPrecisionLU schur_lu;        // its LU
   std::vector<double> work, below;
   SinglePrecisionFactor single;
@@ -304,7 +304,7 @@ CholeskySchurLU::Outcome CholeskySchurLU::factorize(const SparseMatrix& a) {
     s.analyse();
   }
   s.form_schur(a);
-  if (!s.schur_lu.factorize(std::move(s.schur))) return Outcome::failed;
+  if (!s.schur_lu.factorize(s.schur)) return Outcome::failed;
   s.work.resize(s.n);
   s.held = true;
   return Outcome::factorized;

@@ -26,8 +26,8 @@ constexpr double kBackwardError = 2.0;
 constexpr double kStall = 0.5;
 }  // namespace
 
-bool MixedPrecisionLU::factorize(Eigen::MatrixXd matrix) {
-  matrix_ = std::move(matrix);
+bool MixedPrecisionLU::factorize(Eigen::MatrixXd& matrix) {
+  matrix_.swap(matrix);
   const int m = size();
   norm_ = m > 0 ? matrix_.cwiseAbs().rowwise().sum().maxCoeff() : 0.0;
   use_double_ = false;

@@ -13,8 +13,9 @@ namespace tirefem {
 
 class MixedPrecisionLU {
  public:
-  // False if the matrix is singular in double precision too.
-  bool factorize(Eigen::MatrixXd matrix);
+  // Takes the matrix by swapping it in (the caller gets the previous one's storage back to fill again).
+  // False if it is singular in double precision too.
+  bool factorize(Eigen::MatrixXd& matrix);
   // y ← S⁻¹ y to the backward error of a double-precision LU solve.
   void solve(double* y);
   // y ← S⁻¹ y with the single-precision factors alone (a preconditioner's accuracy).
