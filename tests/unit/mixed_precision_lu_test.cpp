@@ -28,15 +28,21 @@ double backward_error(const Eigen::MatrixXd& s, const Eigen::VectorXd& x, const 
          (s.cwiseAbs().rowwise().sum().maxCoeff() * x.lpNorm<Eigen::Infinity>() + b.lpNorm<Eigen::Infinity>());
 }
 
+// x = S⁻¹ b by `lu`, factorised from a copy of S (factorize swaps its argument out).
+Eigen::VectorXd factorized_solve(MixedPrecisionLU& lu, const Eigen::MatrixXd& s, const Eigen::VectorXd& b) {
+  Eigen::MatrixXd copy = s;
+  EXPECT_TRUE(lu.factorize(copy));
+  Eigen::VectorXd x = b;
+  lu.solve(x.data());
+  return x;
+}
+
 TEST(MixedPrecisionLU, RefinesSinglePrecisionFactorsToDoubleAccuracy) {
   const int m = 300;
   const Eigen::MatrixXd s = with_condition(m, 3.0, 1);
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(m, -1.0, 2.0);
   MixedPrecisionLU lu;
-  Eigen::MatrixXd copy = s;
-  ASSERT_TRUE(lu.factorize(copy));
-  Eigen::VectorXd x = b;
-  lu.solve(x.data());
+  Eigen::VectorXd x = factorized_solve(lu, s, b);
   EXPECT_FALSE(lu.double_factors());
   EXPECT_GE(lu.refinement_steps(), 2);  // one single-precision solve alone is not enough
   EXPECT_LE(lu.refinement_steps(), 4);
@@ -57,10 +63,7 @@ TEST(MixedPrecisionLU, HandsAMatrixTooIllConditionedForFloatsToTheDoubleLU) {
   const Eigen::MatrixXd s = with_condition(m, 9.0, 2);  // cond 1e9: floats (ε 6e-8) cannot resolve it
   const Eigen::VectorXd b = Eigen::VectorXd::Ones(m);
   MixedPrecisionLU lu;
-  Eigen::MatrixXd copy = s;
-  ASSERT_TRUE(lu.factorize(copy));
-  Eigen::VectorXd x = b;
-  lu.solve(x.data());
+  Eigen::VectorXd x = factorized_solve(lu, s, b);
   EXPECT_TRUE(lu.double_factors());
   EXPECT_LT(backward_error(s, x, b), 8 * 2.3e-16);
   const int steps = lu.refinement_steps();
