@@ -68,7 +68,7 @@ void MixedPrecisionLU::solve(double* y) {
   int info = 0;
   if (!use_double_) {
     // x ← x + S_f⁻¹ r, r = y − S x, until r is at the round-off of a backward-stable double solve:
-    // ‖r‖∞ ≤ m ε (‖S‖∞ ‖x‖∞ + ‖y‖∞).
+    // ‖r‖∞ ≤ kBackwardError · ε (‖S‖∞ ‖x‖∞ + ‖y‖∞).
     const Eigen::Map<const Eigen::VectorXd> b(y, m);
     const double eps = std::numeric_limits<double>::epsilon();
     x_.setZero(m);
