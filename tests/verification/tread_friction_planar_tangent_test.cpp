@@ -363,6 +363,20 @@ TEST(TreadFrictionPlanar, SmoothedJacobianKeepsTheResidual) {
   EXPECT_GT((smoothed - exact).cwiseAbs().maxCoeff(), 1e-3 * exact.cwiseAbs().maxCoeff());
 }
 
+// The stick tangent's weight in the smoothed tangent is a blend weight: 1 at and below the limit (a frozen
+// plan's sliding point may lie below it), linear to 0 at (1 + band) L, 0 beyond and for band 0.
+TEST(TreadFrictionPlanar, StickTangentWeightIsABlend) {
+  const double limit = 2.0, band = 0.1;
+  EXPECT_EQ(stick_tangent_weight(0.0, limit, band), 1.0);
+  EXPECT_EQ(stick_tangent_weight(0.5 * limit, limit, band), 1.0);
+  EXPECT_EQ(stick_tangent_weight(limit, limit, band), 1.0);
+  EXPECT_NEAR(stick_tangent_weight(1.05 * limit, limit, band), 0.5, 1e-12);
+  EXPECT_EQ(stick_tangent_weight(1.1 * limit, limit, band), 0.0);
+  EXPECT_EQ(stick_tangent_weight(3.0 * limit, limit, band), 0.0);
+  EXPECT_EQ(stick_tangent_weight(0.5 * limit, limit, 0.0), 0.0);
+  EXPECT_EQ(stick_tangent_weight(1.05 * limit, limit, 0.0), 0.0);
+}
+
 // The tangent is summed per pair of elements of a strip (forms/strip_blocks.hpp), in strip, line and
 // point order: bit for bit the same on one and two threads, in both modes (1D: drift 0, planar off).
 TEST(TreadFrictionPlanar, SameResultOnAnyThreadCount) {

@@ -67,6 +67,11 @@ struct TreadTraction {
   Eigen::Vector3d force = Eigen::Vector3d::Zero();  // tangential force on the tyre, N
 };
 
+// The weight of the stick tangent in a sliding point's smoothed tangent (TreadFrictionForm::
+// set_jacobian_smoothing): 1 at and below the friction-limited shear L (a frozen plan's sliding point may
+// lie below it at a later iterate), falling linearly to 0 at |s| = (1 + band) L, 0 beyond; 0 for band 0.
+double stick_tangent_weight(double shear_norm, double limit, double band);
+
 class TreadFrictionForm final : public Form {
  public:
   // `points` in the order of the Winkler form (WinklerContactForm::points()); `shear_modulus` G of the

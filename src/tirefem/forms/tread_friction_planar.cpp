@@ -47,6 +47,11 @@ Eigen::Matrix3d direction_derivative(const TravelCoordinate& c) {
 }
 }  // namespace
 
+double stick_tangent_weight(double shear_norm, double limit, double band) {
+  if (!(band > 0.0)) return 0.0;
+  return std::clamp(1.0 - (shear_norm / limit - 1.0) / band, 0.0, 1.0);
+}
+
 FrictionPlan TreadFrictionForm::plan_planar(const Eigen::VectorXd& u, const std::vector<char>& region) const {
   const Eigen::Vector2d along(1.0, drift_);
   FrictionPlan plan(points_.size());
@@ -255,7 +260,9 @@ int TreadFrictionForm::march_planar(int l, const FrictionPlan& plan, const Eigen
       row.middleCols<3>(column(i)) += slip_shear(q, 1.0, 1.0) * e * k.penetration.gradient.transpose() + grad;
       // Smoothed Jacobian (set_jacobian_smoothing): just past the friction limit, the stick tangent
       // blended in, its weight falling linearly from 1 at |s| = L to 0 at |s| = (1 + band) L.
-      const double w = jacobian_smoothing_ > 0.0 ? 1.0 - (norm / limit - 1.0) / jacobian_smoothing_ : 0.0;
+      // (Unclamped, a frozen plan's sliding point below its limit got a weight above 1: at |s| = 0 and
+      // band 0.1, 11 stick tangents less 10 slip ones.)
+      const double w = stick_tangent_weight(norm, limit, jacobian_smoothing_);
       if (w > 0.0) {  // (1 − w) slip + w stick, the stick tangent as in the stick branch above
         const double c = w * shear_modulus_ / p.height * p.weight;
         o.d_force *= 1.0 - w;
