@@ -259,9 +259,8 @@ int TreadFrictionForm::march_planar(int l, const FrictionPlan& plan, const Eigen
       row = limit * de;
       row.middleCols<3>(column(i)) += slip_shear(q, 1.0, 1.0) * e * k.penetration.gradient.transpose() + grad;
       // Smoothed Jacobian (set_jacobian_smoothing): just past the friction limit, the stick tangent
-      // blended in, its weight falling linearly from 1 at |s| = L to 0 at |s| = (1 + band) L.
-      // (Unclamped, a frozen plan's sliding point below its limit got a weight above 1: at |s| = 0 and
-      // band 0.1, 11 stick tangents less 10 slip ones.)
+      // blended in, its weight falling linearly from 1 at |s| = L to 0 at |s| = (1 + band) L
+      // (stick_tangent_weight: 1 below L too, where a frozen plan's sliding point may lie).
       const double w = stick_tangent_weight(norm, limit, jacobian_smoothing_);
       if (w > 0.0) {  // (1 − w) slip + w stick, the stick tangent as in the stick branch above
         const double c = w * shear_modulus_ / p.height * p.weight;
