@@ -17,8 +17,8 @@ namespace {
 // n × 26 doubles; each LU's numeric object), so every step faulted its pages in again, and a page fault
 // is expensive on a virtual machine. Measured on the whole example (2 cores, studies side by side on two
 // worker threads), 3 paired runs against glibc's defaults, medians: wall 70.6 → 57.7 s, system time
-// 16.2 → 6.5 s, peak memory 611 → 652 MiB; page faults 1.9 M → 0.32 M in one run each (README, solver
-// notes, "The allocator keeps freed memory").
+// 16.2 → 6.5 s, peak memory 611 → 652 MiB; page faults 1.9 M → 0.32 M in one run each
+// (docs/benchmark-log.md, "The allocator keeps freed memory").
 constexpr int kMiB = 1 << 20;
 constexpr int kKeptBlockBytes = 512 * kMiB;  // the mmap threshold
 constexpr int kKeptFreeBytes = 1024 * kMiB;  // the trim threshold
