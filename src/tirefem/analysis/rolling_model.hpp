@@ -8,6 +8,7 @@
 // and, at a slip angle, also sideways by tan α per unit of travel (ISO 8855: α > 0 when the wheel moves
 // to the left of its heading, so the road moves to the right under it, towards +x, when the wheel
 // travels in +y); camber tilts the road plane (road/cambered_plane.hpp).
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -59,6 +60,11 @@ class RollingModel {
   // tangent at u (one assembly, one linear solve), and dQz/dδz along it. False when the solve fails or the
   // stiffness is not positive. Leaves δz as it was.
   bool deflection_rate(const Eigen::VectorXd& u, Eigen::VectorXd& rate, double& stiffness);
+  // du/dt at the converged state u (at the slip `from` and the model's δz) for the slip moving from `from`
+  // (t = 0) towards `to` (t = 1) in (axle height / Rk, tan α, γ), and d(Fx, Fy)/dt along it (parameter_rate):
+  // the tangent predictor of a continuation stage that has no secant. Leaves the slip at `from`.
+  bool slip_rate(const Eigen::VectorXd& u, const WheelSlip& from, const WheelSlip& to, Eigen::VectorXd& rate,
+                 Eigen::Vector2d& force_rate);
   void fill(RollingStateResult& state, const Solved& s) const;
   // The converged Coulomb states later states start from (RollingStart::states), and the adoption of
   // such states solved by another model of the same study's tyre, mesh and support (at the same δz).
@@ -87,8 +93,17 @@ class RollingModel {
   Attempt continuation(const FrictionLaw& law, const Parameters& target, int from_index, int& solves);
   void apply(const Parameters& parameters);
   const Known* nearest(const Parameters& p, const Known* other = nullptr) const;
-  // `path`: indices in known_ of the continuation under way (its start state, then its stages).
-  Eigen::VectorXd predict(const Parameters& p, const Eigen::VectorXd& start, const std::vector<int>& path) const;
+  // `path`: indices in known_ of the continuation under way (its start state, then its stages). False
+  // (and `out` untouched) where no secant serves.
+  bool predict(const Parameters& p, const std::vector<int>& path, Eigen::VectorXd& out) const;
+  // du/dt at the converged state u for the parameters p(t) = at + t · direction (δz held): K du/dt = −∂R/∂t
+  // with the exact tangent at u (one assembly, one linear solve), and d(Fx, Fy)/dt along it. False when
+  // the solve fails. Leaves the parameters at `at`.
+  bool parameter_rate(const Eigen::VectorXd& u, const Parameters& at, const Parameters& direction,
+                      Eigen::VectorXd& rate, Eigen::Vector2d& force_rate);
+  // Both rates: K du/dt = −∂R/∂t at u, ∂R/∂t by central differences over ±h of `move` (which puts the
+  // support or the slip at t; move(0) is where u is).
+  bool solution_rate(const Eigen::VectorXd& u, const std::function<void(double)>& move, double h, Eigen::VectorXd& rate);
 
   const TyreMesh& tm_;
   ContactSettings settings_;
