@@ -64,7 +64,9 @@ const RollingStart& start() {
 struct Model {
   RollingResult result;
   std::unique_ptr<RollingModel> model;
+  FrictionLaw law;  // Coulomb with the study's friction
   Model() {
+    law.friction = rate_study().friction;
     const Case& c = example_case();
     result.footprint = start().footprint;
     result.deflection_mm = result.footprint.final_state.deflection_mm;
@@ -90,8 +92,7 @@ TEST_P(RollingDeflectionRate, PredictsTheStatesAtNearbyDeflections) {
   const RateCase& rc = GetParam();
   Model m;
   RollingModel& model = *m.model;
-  FrictionLaw law;
-  law.friction = 0.7;
+  const FrictionLaw& law = m.law;
   const WheelSlip slip{*start().effective_rolling_radius_mm / (1.0 + rc.slip), rc.slip_angle_deg * kDegree, 0.0};
   const double d0 = model.deflection(), step = 0.05;
   const RollingModel::Solved at = model.solve(law, slip);
@@ -132,8 +133,7 @@ TEST_P(RollingSlipRate, PredictsTheStatesAtNearbySlips) {
   const SlipRateCase& rc = GetParam();
   Model m;
   RollingModel& model = *m.model;
-  FrictionLaw law;
-  law.friction = 0.7;
+  const FrictionLaw& law = m.law;
   const double re = *start().effective_rolling_radius_mm;
   const auto slip_at = [&](double t) {
     return WheelSlip{re / (1.0 + rc.slip + t * rc.slip_step), (rc.slip_angle_deg + t * rc.angle_step_deg) * kDegree, 0.0};

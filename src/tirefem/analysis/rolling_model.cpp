@@ -126,7 +126,8 @@ void RollingModel::apply(const Parameters& p) {
   else if (p[2] != 0.0) throw std::invalid_argument("camber on a support other than a plane");
 }
 
-RollingModel::Solved RollingModel::solve(const FrictionLaw& law, const WheelSlip& slip, bool from_last) {
+RollingModel::Solved RollingModel::solve(const FrictionLaw& law, const WheelSlip& slip, bool from_last,
+                                         bool along_tangent) {
   const auto t0 = Clock::now();
   const int factorizations0 = newton_->linear_stats().factorizations;
   const int newton0 = newton_->total_iterations();
@@ -138,7 +139,7 @@ RollingModel::Solved RollingModel::solve(const FrictionLaw& law, const WheelSlip
   // Bounded by contact.max_state_iterations. (A second attempt from free rolling after a failed one from
   // the neighbour, tried on 80 × 46 full at α = 4° with Qz held, failed as well and doubled the time to
   // the failure: docs/studies/planar-friction-newton.md, fifth look.)
-  Attempt a = continuation(law, target, from_index, s.counts.solves);
+  Attempt a = continuation(law, target, from_index, along_tangent, s.counts.solves);
   s.converged = a.converged;
   s.failure = a.failure;
   s.parameters = target;
@@ -155,7 +156,7 @@ RollingModel::Solved RollingModel::solve(const FrictionLaw& law, const WheelSlip
 }
 
 RollingModel::Attempt RollingModel::continuation(const FrictionLaw& law, const Parameters& target, int from_index,
-                                                 int& solves) {
+                                                 bool along_tangent, int& solves) {
   Attempt a;
   const bool full_slip = law.mode == FrictionLaw::Mode::full_slip;
   const int newton0 = newton_->total_iterations();
@@ -219,13 +220,16 @@ RollingModel::Attempt RollingModel::continuation(const FrictionLaw& law, const P
     apply(p);
     Eigen::VectorXd trial = u;
     if (law.mode == FrictionLaw::Mode::coulomb && !predict(p, path, trial)) {
-      // No secant: along the tangent at the stage's start state (the tread sticking where it sticks there),
-      // where that linear response's change of the tread's force (Fx, Fy) is within what friction still
-      // allows, μ Fz − |F|; beyond, from the start state. Measured on the coarse test case (40 × 12 half
-      // model, one thread): κ 0 → 0.15 in one stage took 139 Newton iterations from the whole tangent step
-      // (the sticking response's Fx there 6.5 times the 2590 N friction allows) against 7 from the start
-      // state; with the step scaled down to the friction's reserve, 6, but κ −0.15 after it then failed.
-      if (rate_at != done && (target - p0).head<3>().cwiseAbs().maxCoeff() > 0.0) {
+      // No secant, and asked for (free rolling's secant on Rk): along the tangent at the stage's start state
+      // (the tread sticking where it sticks there), where that linear response's change of the tread's
+      // force (Fx, Fy) is within what friction still allows, μ Fz − |F|; beyond, from the start state.
+      // Measured on every stage without a secant (docs/studies/rolling-newton-cost.md): one Newton
+      // iteration fewer on most such states, but the rig's hardest states, reached on another path, took
+      // more (5550 N, α 3.92°: 55–57 against 34–35 iterations on two BLAS kernels; the rig 202–219 s
+      // against 170–180 s); in free rolling alone, 1–2 iterations fewer per study and the rest as before.
+      // Without the friction bound, κ 0 → 0.15 on the coarse test case took 139 iterations from the whole
+      // tangent step (its Fx 6.5 times what friction allows) against 7 from the start state.
+      if (along_tangent && rate_at != done && (target - p0).head<3>().cwiseAbs().maxCoeff() > 0.0) {
         const Parameters from = p0 + done * (target - p0);
         Parameters direction = target - p0;
         direction[3] = 0.0;

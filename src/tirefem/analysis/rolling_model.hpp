@@ -44,8 +44,9 @@ class RollingModel {
   // Coulomb state (predicted), continued in (1/Rk, tan α, γ) from it, the step halved when a solve fails.
   // Full slip (α = γ = 0): from the static footprint, continued in μ with a secant predictor; the whole
   // friction force at once is tried first.
-  // `from_last`: continue from the state converged last instead of the nearest one.
-  Solved solve(const FrictionLaw& law, const WheelSlip& slip, bool from_last = false);
+  // `from_last`: continue from the state converged last instead of the nearest one. `along_tangent`: a stage
+  // without a secant starts along du/dt (slip_rate) instead of from its start state.
+  Solved solve(const FrictionLaw& law, const WheelSlip& slip, bool from_last = false, bool along_tangent = false);
   // Holds Qz at `target` by moving the support (δz): Newton steps in δz, each a rolling solve from the
   // last state predicted along its du/dδz (deflection_rate), until |Qz − target| ≤ tolerance · target;
   // `stiffness` (dQz/dδz) and then secants serve where du/dδz is not found. Leaves the model at the new
@@ -90,7 +91,8 @@ class RollingModel {
     Eigen::VectorXd u;
     ContactSolveOutcome last;  // of the last stage
   };
-  Attempt continuation(const FrictionLaw& law, const Parameters& target, int from_index, int& solves);
+  Attempt continuation(const FrictionLaw& law, const Parameters& target, int from_index, bool along_tangent,
+                       int& solves);
   void apply(const Parameters& parameters);
   const Known* nearest(const Parameters& p, const Known* other = nullptr) const;
   // `path`: indices in known_ of the continuation under way (its start state, then its stages). False

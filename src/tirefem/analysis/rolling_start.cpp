@@ -18,7 +18,7 @@ RollingModel::Solved secant_free_rolling(RollingModel& model, const FrictionLaw&
                                          const ProgressSink& progress) {
   RollingModel::Solved s;
   for (int it = 0; it < 15; ++it) {
-    s = model.solve(law, slip);
+    s = model.solve(law, slip, false, /*along_tangent=*/true);
     total.newton_iterations += s.counts.newton_iterations;
     total.factorizations += s.counts.factorizations;
     total.solves += s.counts.solves;
