@@ -10,8 +10,8 @@
 //   1.5e-3 and 1.9e-2; it falls with Δ: at 0.002 mm 1.4e-4 and 2.9e-4). A ∂R/∂δz by differences over
 //   0.01 mm instead of 1e-5 fails both (dQz/dδz 12% low, the prediction 15% off).
 // The derivative in the slip, du/dt for (axle height / Rk, tan α, γ) moving along a direction
-// (RollingModel::slip_rate), the tangent predictor of a continuation stage that has no secant, checked the
-// same way in the same states against converged states at t = ±1 (κ ± 0.00025, α ± 0.025°): d(Fx, Fy)/dt
+// (RollingModel::slip_rate; free rolling's secant steps on Rk are predicted along it), checked the same
+// way in the same states against converged states at t = ±1 (κ ± 0.00025, α ± 0.025°): d(Fx, Fy)/dt
 // against the central difference of the converged states' forces, 2% of its size (observed 1.9e-3 and
 // 7.6e-3); the state at t = 1 predicted along it, u + du/dt, to 5% of the change (observed 6.1e-3 and
 // 1.5e-2). Both fall with the step (at κ ± 0.001, α ± 0.1°: 3.6e-3 and 1.7e-2; 3.4e-2 and 4.3e-2): the

@@ -63,7 +63,7 @@ class RollingModel {
   bool deflection_rate(const Eigen::VectorXd& u, Eigen::VectorXd& rate, double& stiffness);
   // du/dt at the converged state u (at the slip `from` and the model's δz) for the slip moving from `from`
   // (t = 0) towards `to` (t = 1) in (axle height / Rk, tan α, γ), and d(Fx, Fy)/dt along it (parameter_rate):
-  // the tangent predictor of a continuation stage that has no secant. Leaves the slip at `from`.
+  // the tangent predictor of free rolling's secant steps (solve's along_tangent). Leaves the slip at `from`.
   bool slip_rate(const Eigen::VectorXd& u, const WheelSlip& from, const WheelSlip& to, Eigen::VectorXd& rate,
                  Eigen::Vector2d& force_rate);
   void fill(RollingStateResult& state, const Solved& s) const;
