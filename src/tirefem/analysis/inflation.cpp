@@ -38,7 +38,30 @@ NewtonSettings inflation_newton_settings(const InflationSettings& settings) {
   return n;
 }
 
+// The inflated state's stability (nonlinear theory), from the last solve's own test, or from one made here
+// when that solve took no step (NewtonSolver tests only states it stepped to); said on the progress.
+void judge_stability(InflationResult& r, NewtonSolver& newton, const LoadStepRecord& last, const TyreMesh& tm,
+                     const ProgressSink& progress) {
+  r.tangent_shift = last.iterations > 0 ? last.tangent_shift : newton.stability_shift();
+  if (r.tangent_shift <= 0.0) return;
+  r.instability = fmt::format(
+      "the inflated tyre is unstable on the {} x {} {} mesh (its tangent is indefinite): with this model a "
+      "mesh-scale mode of too coarse a mesh (README, \"How fine a mesh\"; here elements up to {:.0f} mm long "
+      "round the circumference at the crown): refine it, mesh.circumferential_elements first (or a smaller "
+      "circumferential_refinement), else meridional_elements",
+      tm.mesh.v_elements(), tm.half_model ? tm.mesh.u_elements() : tm.mesh.u_elements() / 2,
+      tm.half_model ? "half" : "full", longest_circumferential_element_mm(tm));
+  if (progress) progress("  warning: " + r.instability);
+}
+
 }  // namespace
+
+double longest_circumferential_element_mm(const TyreMesh& tm) {
+  const std::vector<double>& phi = tm.mesh.v_values;
+  double longest = 0.0;
+  for (std::size_t k = 1; k < phi.size(); ++k) longest = std::max(longest, std::abs(phi[k] - phi[k - 1]));
+  return longest * tm.profile.point(0.0)[1];
+}
 
 void add_counters(SolveCounters& to, const SolveCounters& from) {
   to.load_steps += from.load_steps;
@@ -123,6 +146,7 @@ InflationResult run_inflation(const TyreMesh& tm, const InflationSettings& setti
         settings.pressure, 100.0 * (path.steps.empty() ? 0.0 : path.steps.back().load_factor),
         path.last_failure.relative_residual, path.cutbacks);
 
+  if (path.completed && !settings.linear) judge_stability(result, newton, path.steps.back(), tm, progress);
   c.load_steps = static_cast<int>(path.steps.size());
   c.cutbacks = path.cutbacks;
   c.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -153,7 +177,8 @@ InflationResult run_inflation_from(const TyreMesh& tm, const InflationSettings& 
   if (!out.converged) return run_inflation(tm, settings, progress);
   add_counters(result.counters, newton, *problem);
   result.converged = true;
-  result.steps = {LoadStepRecord{1.0, out.iterations, out.relative_residual}};
+  result.steps = {LoadStepRecord{1.0, out.iterations, out.relative_residual, out.final_shift}};
+  judge_stability(result, newton, result.steps.back(), tm, progress);
   result.counters.load_steps = 1;
   result.counters.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;

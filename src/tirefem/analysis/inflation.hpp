@@ -50,7 +50,15 @@ struct InflationResult {
   std::vector<LoadStepRecord> steps;
   SolveCounters counters;
   std::string failure;  // when not converged: where it stopped, the residual, the fields to check
+  // Stability of the inflated state (nonlinear theory): 0 when its tangent is positive definite, > 0 (the
+  // shift that makes it so, NewtonOutcome::final_shift) when the tyre is unstable already when inflated:
+  // on a mesh too coarse round the circumference, a mesh-scale mode (README, "How fine a mesh").
+  double tangent_shift = 0.0;
+  std::string instability;  // when tangent_shift > 0: what it is and what to change
 };
+
+// The length of the mesh's longest element round the circumference, at the equator's carcass radius, mm.
+double longest_circumferential_element_mm(const TyreMesh& tyre_mesh);
 
 InflationResult run_inflation(const TyreMesh& tyre_mesh, const InflationSettings& settings,
                               const ProgressSink& progress = {});

@@ -175,6 +175,7 @@ toml::table write_inflation(const ResultsFolder& folder, ReportWriter& plots, co
   toml::table inflation{{"pressure_MPa", c.inflation.pressure},
                         {"theory", c.inflation.linear ? "linear" : "nonlinear"},
                         {"converged", r.converged},
+                        {"stable", r.tangent_shift <= 0.0},
                         {"crown_radius_growth_mm", s.crown_radius_growth_mm},
                         {"section_width_growth_mm", s.section_width_growth_mm},
                         {"max_carcass_cord_force_N", s.max_carcass_cord_force_N},

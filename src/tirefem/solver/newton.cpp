@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <stdexcept>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -352,6 +353,12 @@ void NewtonSolver::test_stability_nearest() {
   if (shift_ > kRoundOffShift) lu_mode_ = true;
 }
 
+double NewtonSolver::stability_shift() {
+  if (!inertia_corrected_) throw std::logic_error("NewtonSolver::stability_shift: the problem is not symmetric");
+  test_stability_nearest();
+  return shift_;
+}
+
 bool NewtonSolver::solve_inertia_corrected(const Eigen::VectorXd& rhs, Eigen::VectorXd& du,
                                            std::optional<double> first_shift) try {
   const SparseMatrix& tangent = problem_.system().tangent();
@@ -469,7 +476,7 @@ LoadPathResult follow_load_path(
     previous_lambda = lambda;
     u = trial;
     lambda = target;
-    const LoadStepRecord record{lambda, outcome.iterations, outcome.relative_residual};
+    const LoadStepRecord record{lambda, outcome.iterations, outcome.relative_residual, outcome.final_shift};
     result.steps.push_back(record);
     if (progress)
       progress(fmt::format("  load factor {:.4f}: {} Newton iterations, residuals {:.1e}", lambda,

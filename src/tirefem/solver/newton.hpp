@@ -104,6 +104,10 @@ class NewtonSolver {
   // `tolerance` relative to the preconditioned residual. False when that fails: a derivative of the
   // solution along a parameter (a tangent predictor) costs one such solve.
   bool solve_with_tangent(const Eigen::VectorXd& rhs, Eigen::VectorXd& x, double tolerance);
+  // The stability of the state the problem last assembled (symmetric problems): 0 when its tangent is
+  // positive definite, else a shift as NewtonOutcome::final_shift. One or two Cholesky attempts; solve()
+  // makes this test itself only on states it stepped to.
+  double stability_shift();
 
  private:
   // `fresh`: factorise the current tangent even if a reused factorisation would do. `near_convergence`:
@@ -146,6 +150,7 @@ struct LoadStepRecord {
   double load_factor = 0.0;
   int iterations = 0;
   double relative_residual = 0.0;
+  double tangent_shift = 0.0;  // NewtonOutcome::final_shift of the converged state
 };
 
 struct LoadPathResult {
