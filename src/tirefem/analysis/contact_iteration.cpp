@@ -134,10 +134,18 @@ DeflectionPath::Step DeflectionPath::advance_to(double deflection, int max_cutba
     escaped_shift = std::max(escaped_shift, outcome.escaped_shift);
     if (!outcome.converged) {
       if (step.cutbacks >= max_cutbacks) {
-        step.failure = fmt::format(
-            "δz = {:.4g} mm: {} (after {} cut-backs); try more load points, a larger "
-            "contact.max_newton_iterations or contact.max_contact_iterations",
-            target, outcome.failure, step.cutbacks);
+        // Having left unstable equilibria for a stable state it did not reach, the tyre lost its stability
+        // here: more iterations are not the remedy (on a coarse mesh, a mesh-scale mode).
+        const std::string remedy =
+            escapes > 0 ? fmt::format("the tyre lost its stability on the way ({} unstable equilibria left for a "
+                                      "stable state not reached): on a coarse mesh a mesh-scale mode (README, \"How "
+                                      "fine a mesh\"): refine the mesh, or seek the nearest equilibrium "
+                                      "(contact.equilibrium = \"nearest\")",
+                                      escapes)
+                        : std::string("try more load points, a larger contact.max_newton_iterations or "
+                                      "contact.max_contact_iterations");
+        step.failure = fmt::format("δz = {:.4g} mm: {} (after {} cut-backs); {}", target, outcome.failure,
+                                   step.cutbacks, remedy);
         contact_.set_deflection(states_.back().deflection);
         return step;
       }
