@@ -2,8 +2,8 @@
 // "How fine a mesh" finds the example tyre unstable already when inflated on meshes too coarse round the
 // circumference (a mesh-scale mode; 40 × 12 with refinement 4: 12 negative eigenvalues) and stable on
 // finer ones (64 × 16 with equal elements: none). Each inflation says which, also when its Newton solve
-// took no step (a full model from its half model's mirror image), and a run seeking stable equilibria
-// (contact.equilibrium = "stable") stops the studies on an unstable inflated mesh at once, saying why.
+// took no step (a full model from its half model's mirror image), and a static contact study seeking stable
+// equilibria (contact.equilibrium = "stable") on an unstable inflated mesh stops at once, saying why.
 #include <cstdio>
 #include <numbers>
 #include <stdexcept>
@@ -12,7 +12,6 @@
 #include <gtest/gtest.h>
 
 #include "contact_support.hpp"
-#include "tirefem/analysis/shared_states.hpp"
 
 namespace tirefem::verification {
 namespace {
@@ -54,22 +53,28 @@ TEST(InflationStability, AFullModelStartedFromItsHalfIsTestedToo) {
   EXPECT_GT(f.tangent_shift, 0.0);
 }
 
+// A static contact study seeking stable equilibria refuses an unstable inflated state at once, with the
+// inflation's message and the way out; one seeking the nearest equilibrium solves on it.
 TEST(InflationStability, StableEquilibriaAreNotSoughtFromAnUnstableInflatedState) {
-  Case c = example_case();
-  c.mesh = coarse_mesh(32, 12);
-  c.contact.equilibrium = ContactSettings::Equilibrium::stable;
-  InflatedTyres stable_mode(c, {});
+  const Case& c = example_case();
+  const TyreMesh tm = build_tyre_mesh(c.tyre, coarse_mesh(32, 12));
+  const InflationResult inflated = inflate_for_contact(tm, c.inflation);
+  ASSERT_GT(inflated.tangent_shift, 0.0);
+  const LoadCurveStudy study = load_curve("plane", plane_support(), 4.0, 1);
+  ContactSettings stable = test_contact_settings(ContactSettings::Iteration::single_loop);
+  stable.equilibrium = ContactSettings::Equilibrium::stable;
   try {
-    stable_mode.inflated(c.mesh);
-    ADD_FAILURE() << "an unstable inflated state was handed to a study seeking stable equilibria";
+    run_load_curve(tm, c.tyre, c.inflation, stable, study, {}, &inflated);
+    ADD_FAILURE() << "a study seeking stable equilibria started from an unstable inflated state";
   } catch (const std::runtime_error& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("unstable on the 32 x 12 half mesh"), std::string::npos) << what;
     EXPECT_NE(what.find("\"nearest\""), std::string::npos) << what;
   }
-  c.contact.equilibrium = ContactSettings::Equilibrium::nearest;
-  InflatedTyres nearest_mode(c, {});
-  EXPECT_GT(nearest_mode.inflated(c.mesh).tangent_shift, 0.0);  // solved on, its states reported unstable
+  const StaticContactResult nearest = run_load_curve(tm, c.tyre, c.inflation,
+                                                     test_contact_settings(ContactSettings::Iteration::single_loop),
+                                                     study, {}, &inflated);
+  EXPECT_TRUE(nearest.completed);
 }
 
 }  // namespace

@@ -139,12 +139,11 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     }
   }
   for (const TyreTestStudy& s : c.tyre_tests) {
-    // The half model first: the full model then starts from its mirror image, row by row.
-    for (const MeshSettings& m : {tyre_test_half_mesh(s.mesh.value_or(c.mesh)), s.mesh.value_or(c.mesh)}) {
-      try {
-        tyres.inflated(m);
-      } catch (const std::runtime_error&) {
-      }
+    try {
+      // The half model first: the full model then starts from its mirror image, row by row.
+      tyres.inflated(tyre_test_half_mesh(s.mesh.value_or(c.mesh)));
+      tyres.inflated(s.mesh.value_or(c.mesh));
+    } catch (const std::runtime_error&) {
     }
   }
   if (!c.load_curves.empty() || !c.footprints.empty()) {
