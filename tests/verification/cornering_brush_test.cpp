@@ -85,6 +85,9 @@ const RollingResult& run() {
 struct Brush {
   double fy = 0.0, mz = 0.0, a_centre = 0.0;
   double closed_trail = 0.0;  // all stick: Σ_l F_l (a_l/3 − y_mid,l) / Σ_l F_l, F_l ∝ a_l² × the line's width
+  // The mean distance from the leading edge, Σ c w (y_A − y) / Σ c w over the points in contact (c = G/hp):
+  // the brush's relaxation length Kyα/Cy, Kyα = Σ c w (y_A − y) and Cy = Σ c w.
+  double mean_distance = 0.0;
 };
 
 // The brush model on the FE pressure of state s (see the top).
@@ -95,7 +98,7 @@ Brush brush(const RollingResult& r, const RollingStateResult& s, double alpha_de
   for (int q = 0; q < static_cast<int>(pts.size()); ++q)
     if (std::cos(pts[q].v) > 0.5) by_u[pts[q].u].push_back(q);
   Brush b;
-  double centre_u = 1e300, weight_sum = 0.0, trail_sum = 0.0;
+  double centre_u = 1e300, weight_sum = 0.0, trail_sum = 0.0, spring_sum = 0.0;
   for (auto& [u, all] : by_u) {
     std::sort(all.begin(), all.end(), [&](int i, int j) { return pts[i].reference.y() > pts[j].reference.y(); });
     int k0 = -1, k1 = -1;
@@ -117,6 +120,8 @@ Brush brush(const RollingResult& r, const RollingStateResult& s, double alpha_de
       const double traction = (tan_a >= 0 ? 1.0 : -1.0) * (sliding ? limit : stick);  // along +x
       b.fy -= traction * pts[q].weight;
       b.mz -= s.normal[q].position.y() * traction * pts[q].weight;
+      spring_sum += c / hp * pts[q].weight;
+      b.mean_distance += c / hp * pts[q].weight * (ya - pts[q].reference.y());
     }
     const int out_b = all[k1 + 1], in_b = all[k1];
     const double h0 = s.normal[out_b].penetration, h1 = s.normal[in_b].penetration, wb = -h0 / (h1 - h0);
@@ -130,6 +135,7 @@ Brush brush(const RollingResult& r, const RollingStateResult& s, double alpha_de
     if (std::abs(u) < std::abs(centre_u)) centre_u = u, b.a_centre = a;
   }
   b.closed_trail = trail_sum / weight_sum;
+  b.mean_distance /= spring_sum;
   return b;
 }
 
@@ -163,6 +169,32 @@ TEST(CorneringBrush, PneumaticTrailTendsToAThirdOfTheHalfLength) {
               "line a/3 = %.3f mm)\n", trail, brush_trail, b.closed_trail, b.a_centre / 3);
   EXPECT_NEAR(trail, brush_trail, 0.05 * brush_trail);
   EXPECT_NEAR(trail, b.closed_trail, 0.05 * b.closed_trail);
+}
+
+TEST(CorneringBrush, StandingStiffnessIsTheTreadsAndTheRelaxationLengthTheMeanDistanceFromTheLeadingEdge) {
+  // With the carcass rigid the glued tread alone resists the road's motion: Cx = Cy = Σ (G/hp) w over the
+  // patch; and σα = Kyα/Cy (Kyα from the α = 0.1° state, all stick) is the brush's mean distance of the
+  // contact area from the leading edge (a for a rectangle of length 2a). Tolerances: 2% for Cx and Cy, as
+  // for Fy above (the structure ×1000 leaves a carcass compliance in series with the tread, whose share
+  // is Ct/Cc: observed −0.27% and −1.23%, the lateral one larger as the sidewalls bend); 2% for σα,
+  // where that compliance lowers Kyα and Cy alike (observed +0.78%).
+  const RollingResult& r = run();
+  ASSERT_TRUE(r.standing_stiffness.has_value());
+  const StandingStiffness& c = *r.standing_stiffness;
+  ASSERT_TRUE(c.lateral_N_per_mm.has_value());
+  const RollingStateResult& s = state(r, 0);  // α = 0.1°
+  const Brush b = brush(r, s, kAngles[0]);
+  const double k_alpha = std::abs(s.figures.Fy_N) / std::tan(kAngles[0] * M_PI / 180.0);
+  const double sigma = k_alpha / *c.lateral_N_per_mm;
+  std::printf("  rigid carcass: Cx %.2f, Cy %.2f N/mm against the tread's %.2f N/mm (%+.2f%%, %+.2f%%); σα = Kyα/Cy "
+              "%.2f mm against the mean distance from the leading edge %.2f mm (%+.2f%%)\n", c.longitudinal_N_per_mm,
+              *c.lateral_N_per_mm, c.tread_shear_N_per_mm, 100 * (c.longitudinal_N_per_mm / c.tread_shear_N_per_mm - 1),
+              100 * (*c.lateral_N_per_mm / c.tread_shear_N_per_mm - 1), sigma, b.mean_distance,
+              100 * (sigma / b.mean_distance - 1));
+  EXPECT_NEAR(c.longitudinal_N_per_mm, c.tread_shear_N_per_mm, 0.02 * c.tread_shear_N_per_mm);
+  EXPECT_NEAR(*c.lateral_N_per_mm, c.tread_shear_N_per_mm, 0.02 * c.tread_shear_N_per_mm);
+  EXPECT_LT(*c.lateral_N_per_mm, c.tread_shear_N_per_mm);  // in series with the carcass: never above the tread's
+  EXPECT_NEAR(sigma, b.mean_distance, 0.02 * b.mean_distance);
 }
 
 }  // namespace

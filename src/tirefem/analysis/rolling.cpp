@@ -157,6 +157,32 @@ void add_mirrored_points(const std::vector<double>& mirrored, std::vector<SweepP
 // dFy/dα and the pneumatic trail at α = 0 (κ and γ of the sweep): central differences over ±kProbeAngle,
 // two extra solves near the straight-ahead state, where the patch still sticks almost everywhere (the
 // sweep's own points lie in the nonlinear range). Not sweep points: not reported as such.
+// The standing tyre's stiffness at the footprint, on a plane (a flat-plate test; analysis/standing_stiffness.hpp).
+void measure_standing_stiffness(const TyreMesh& tm, const TyreDescription& tyre, const InflationSettings& inflation,
+                                RollingResult& r, const ProgressSink& progress) {
+  if (r.support.kind != SupportDescription::Kind::plane) return;
+  const RoadPlane plane;
+  r.standing_stiffness = standing_stiffness(tm, tyre, inflation.pressure, plane, r.deflection_mm,
+                                            r.footprint.tread_points, r.footprint.final_state.displacement);
+  if (!progress || !r.standing_stiffness) return;
+  const StandingStiffness& c = *r.standing_stiffness;
+  progress(fmt::format("  standing tyre, tread glued to the plane: longitudinal stiffness {:.1f} N/mm{}{} ({:.2f} s)",
+                       c.longitudinal_N_per_mm,
+                       c.lateral_N_per_mm ? fmt::format(", lateral {:.1f} N/mm", *c.lateral_N_per_mm) : "",
+                       c.yaw_Nmm_per_rad ? fmt::format(", yaw {:.1f} N·m/deg", *c.yaw_Nmm_per_rad * 1e-3 * kDegree) : "",
+                       c.time_s));
+}
+
+// σκ = Kxκ/Cx and σα = Kyα/Cy, where the study has both.
+void relaxation_lengths(RollingResult& r) {
+  if (!r.standing_stiffness) return;
+  const StandingStiffness& c = *r.standing_stiffness;
+  if (r.slip_stiffness_N && c.longitudinal_N_per_mm > 0)
+    r.longitudinal_relaxation_length_mm = *r.slip_stiffness_N / c.longitudinal_N_per_mm;
+  if (r.cornering_stiffness_N_per_deg && c.lateral_N_per_mm && *c.lateral_N_per_mm > 0)
+    r.lateral_relaxation_length_mm = std::abs(*r.cornering_stiffness_N_per_deg) / kDegree / *c.lateral_N_per_mm;
+}
+
 constexpr double kProbeAngle = 0.2;  // degrees
 // `mirror`: the tyre is its own mirror image (SlipAngleSweep::mirror_negative_angles), so the probe at
 // −kProbeAngle is the mirror image of the one at +kProbeAngle, not solved.
@@ -238,6 +264,7 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
   }
   const auto t_rolling = Clock::now();
   place_axle_at_footprint(r, tm);
+  measure_standing_stiffness(tm, tyre, inflation, r, progress);
   RollingModel model(tm, tyre, inflation, contact, study, r);
   model.set_progress(progress);
 
@@ -386,6 +413,7 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
       return a.slip != b.slip ? a.slip < b.slip : a.slip_angle_deg < b.slip_angle_deg;
     });
   }
+  relaxation_lengths(r);
   r.completed = ok;
   model.finish(r.counters);
   r.counters.wall_s = seconds_since(t_rolling);

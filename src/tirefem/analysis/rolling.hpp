@@ -20,6 +20,7 @@
 
 #include "tirefem/analysis/contact_iteration.hpp"
 #include "tirefem/analysis/footprint.hpp"
+#include "tirefem/analysis/standing_stiffness.hpp"
 #include "tirefem/forms/rim_flange_form.hpp"
 #include "tirefem/forms/tread_friction_form.hpp"
 
@@ -139,6 +140,12 @@ struct RollingResult {
   // of about 1/6 of the patch length), on the static footprint's Qz and patch length.
   std::optional<double> cornering_stiffness_over_Fz_per_deg;
   std::optional<double> pneumatic_trail_over_patch_length;
+  // On a plane: the standing tyre's tangential stiffness at the footprint (analysis/standing_stiffness.hpp)
+  // and the relaxation lengths σκ = Kxκ/Cx (with the slip stiffness) and σα = Kyα/Cy (with the cornering
+  // stiffness, Kyα per radian).
+  std::optional<StandingStiffness> standing_stiffness;
+  std::optional<double> longitudinal_relaxation_length_mm;
+  std::optional<double> lateral_relaxation_length_mm;
   SolveCounters counters;                             // rolling phase (after the footprint)
 };
 

@@ -66,6 +66,18 @@ double status_code(TreadContact c) {
   return c == TreadContact::stick ? 1.0 : c == TreadContact::slip ? 2.0 : 0.0;
 }
 
+std::string standing_comment(const RollingResult& r) {
+  if (!r.standing_stiffness) return "standing stiffness: measured on a plane only";
+  const StandingStiffness& c = *r.standing_stiffness;
+  return fmt::format("standing tyre, tread glued to the plane: longitudinal stiffness Cx = {:g} N/mm{}; relaxation "
+                     "length Kxkappa/Cx = {}{}",
+                     c.longitudinal_N_per_mm,
+                     c.lateral_N_per_mm ? fmt::format(", lateral Cy = {:g} N/mm", *c.lateral_N_per_mm) : "",
+                     optional_text(r.longitudinal_relaxation_length_mm, " mm"),
+                     r.lateral_relaxation_length_mm
+                         ? fmt::format(", Kyalpha/Cy = {:g} mm", *r.lateral_relaxation_length_mm) : "");
+}
+
 std::vector<std::string> study_comments(const RollingResult& r) {
   return {
       fmt::format("support: {}; friction mu = {:g}; travel {} (the support moves in {} under the tyre)",
@@ -74,6 +86,7 @@ std::vector<std::string> study_comments(const RollingResult& r) {
                   "slip stiffness dQy/dkappa = {}",
                   r.deflection_mm, r.loaded_radius_mm, optional_text(r.effective_rolling_radius_mm, " mm"),
                   optional_text(r.slip_stiffness_N, " N")),
+      standing_comment(r),
       "slip kappa = Re/Rk - 1 (Rk = V/Omega the rolling radius); Qy along the travel (> 0 traction); Mx "
       "about the axle"};
 }
@@ -270,6 +283,20 @@ toml::table rolling_summary(const RollingResult& r) {
   t.insert("loaded_radius_mm", r.loaded_radius_mm);
   if (r.effective_rolling_radius_mm) t.insert("effective_rolling_radius_mm", *r.effective_rolling_radius_mm);
   if (r.slip_stiffness_N) t.insert("slip_stiffness_N", *r.slip_stiffness_N);
+  if (r.standing_stiffness) {
+    const StandingStiffness& c = *r.standing_stiffness;
+    toml::table st;
+    st.insert("longitudinal_N_per_mm", c.longitudinal_N_per_mm);
+    if (c.lateral_N_per_mm) st.insert("lateral_N_per_mm", *c.lateral_N_per_mm);
+    if (c.yaw_Nmm_per_rad) st.insert("yaw_Nm_per_deg", *c.yaw_Nmm_per_rad * 1e-3 / kDeg);
+    st.insert("tread_shear_N_per_mm", c.tread_shear_N_per_mm);
+    st.insert("factorizations", c.factorizations);
+    st.insert("time_s", c.time_s);
+    t.insert("standing_stiffness", std::move(st));
+  }
+  if (r.longitudinal_relaxation_length_mm)
+    t.insert("longitudinal_relaxation_length_mm", *r.longitudinal_relaxation_length_mm);
+  if (r.lateral_relaxation_length_mm) t.insert("lateral_relaxation_length_mm", *r.lateral_relaxation_length_mm);
   toml::array states;
   for (const RollingStateResult& s : r.states) {
     toml::table st;
