@@ -9,6 +9,7 @@
 // Q_FZ1-2 are set to plausible values.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -58,6 +59,8 @@ RigData rig_table(const MagicFormulaCoefficients& c) {
   for (double load : {0.25, 0.5, 1.0, 1.5, 2.0}) {
     const double Fz = load * c.FNOMIN;
     data.radii.push_back({Fz, effective_rolling_radius(c, Fz), c.UNLOADED_RADIUS - deflection_at(c, Fz)});
+    const RelaxationLengths sigma = relaxation_lengths(c, Fz);
+    data.relaxation.push_back({Fz, sigma.sigma_kappa, sigma.sigma_alpha});
   }
   for (int i = 1; i <= 10; ++i) {
     const double rho = 0.003 * i;
@@ -108,7 +111,9 @@ TEST(MagicFormulaRigFit, RecoversTheCoefficientsFromTheRigTable) {
        {std::tuple{c.QSX1, exact.QSX1, "QSX1"}, {c.QSX2, exact.QSX2, "QSX2"}, {c.QSX3, exact.QSX3, "QSX3"},
         {c.Q_FZ1, exact.Q_FZ1, "Q_FZ1"}, {c.Q_FZ2, exact.Q_FZ2, "Q_FZ2"},
         {c.VERTICAL_STIFFNESS, exact.VERTICAL_STIFFNESS, "VERTICAL_STIFFNESS"}, {c.BREFF, exact.BREFF, "BREFF"},
-        {c.DREFF, exact.DREFF, "DREFF"}, {c.FREFF, exact.FREFF, "FREFF"}})
+        {c.DREFF, exact.DREFF, "DREFF"}, {c.FREFF, exact.FREFF, "FREFF"}, {c.PTX1, exact.PTX1, "PTX1"},
+        {c.PTX2, exact.PTX2, "PTX2"}, {c.PTX3, exact.PTX3, "PTX3"}, {c.PTY1, exact.PTY1, "PTY1"},
+        {c.PTY2, exact.PTY2, "PTY2"}})
     EXPECT_LE(std::abs(fitted - expected), 1e-6 * std::abs(expected)) << name << " " << fitted << " vs " << expected;
 }
 
@@ -133,6 +138,45 @@ TEST(MagicFormulaRigFit, TheEffectiveRadiusFitKeepsBreffBounded) {
   EXPECT_LT(e.relative_rms, 2e-3);
   for (const RollingRadiusPoint& p : points)
     EXPECT_NEAR(effective_rolling_radius(c, p.Fz), p.effective_radius, 2e-3 * (R0 - p.effective_radius));
+}
+
+// The relaxation lengths at the file's FNOMIN by hand: sigma_kappa = PTX1 R0 (dfz = 0), sigma_alpha =
+// PTY1 sin(2 atan(1/PTY2)) R0; with camber the (1 - PKY3 |gamma|) factor. Fewer loads determine fewer
+// coefficients: with two, PTX3 and with one also PTX2 and PTY2 are left out (PTY2 = PKY2 then), and the
+// fit still passes through the points.
+TEST(MagicFormulaRigFit, RelaxationLengths) {
+  const MagicFormulaCoefficients exact = truth();
+  const double R0 = exact.UNLOADED_RADIUS, Fz0 = exact.FNOMIN;
+  const RelaxationLengths at_nominal = relaxation_lengths(exact, Fz0);
+  EXPECT_NEAR(at_nominal.sigma_kappa, exact.PTX1 * R0, 1e-15);
+  EXPECT_NEAR(at_nominal.sigma_alpha, exact.PTY1 * std::sin(2 * std::atan(1 / exact.PTY2)) * R0, 1e-15);
+  EXPECT_NEAR(relaxation_lengths(exact, Fz0, 0.05).sigma_alpha, at_nominal.sigma_alpha * (1 - exact.PKY3 * 0.05), 1e-15);
+  for (const std::vector<double>& loads : {std::vector<double>{0.5, 1.5}, std::vector<double>{1.2}}) {
+    std::vector<RelaxationPoint> points;
+    for (double load : loads) {
+      const RelaxationLengths sigma = relaxation_lengths(exact, load * Fz0);
+      points.push_back({load * Fz0, sigma.sigma_kappa, sigma.sigma_alpha});
+    }
+    MagicFormulaCoefficients c = truth();
+    std::vector<std::string> not_determined;
+    const std::vector<ChannelFitError> errors = fit_relaxation_lengths(points, c, not_determined);
+    ASSERT_EQ(errors.size(), 2u);
+    for (const ChannelFitError& e : errors) EXPECT_LT(e.relative_rms, 1e-9) << e.channel << " with " << loads.size() << " loads";
+    const auto missing = [&](const char* key) {
+      return std::find(not_determined.begin(), not_determined.end(), key) != not_determined.end();
+    };
+    EXPECT_TRUE(missing("PTX3"));
+    EXPECT_EQ(missing("PTX2"), loads.size() == 1);
+    EXPECT_EQ(missing("PTY2"), loads.size() == 1);
+    if (loads.size() == 1) EXPECT_EQ(c.PTY2, exact.PKY2);
+  }
+  // No lengths: nothing determined, zeros written.
+  MagicFormulaCoefficients c = truth();
+  std::vector<std::string> not_determined;
+  EXPECT_TRUE(fit_relaxation_lengths({}, c, not_determined).empty());
+  EXPECT_EQ(not_determined.size(), 5u);
+  EXPECT_EQ(c.PTX1, 0.0);
+  EXPECT_EQ(c.PTY1, 0.0);
 }
 
 TEST(MagicFormulaRigFit, RejectsAMissingNominalLoad) {

@@ -109,6 +109,10 @@ struct TyreTestLoad {
   std::optional<double> slip_stiffness_N;              // dFx/dκ at κ = 0
   std::optional<double> cornering_stiffness_N_per_deg;  // dFy/dα at α = 0 (< 0 in W axes)
   std::optional<double> pneumatic_trail_mm;
+  // The standing tyre at the footprint (analysis/standing_stiffness.hpp): Cx, Cy and Cψ, and the relaxation
+  // lengths σκ = Kxκ/Cx and σα = Kyα/Cy (Kyα per radian).
+  std::optional<double> longitudinal_stiffness_N_per_mm, lateral_stiffness_N_per_mm, yaw_stiffness_Nmm_per_rad;
+  std::optional<double> longitudinal_relaxation_length_mm, lateral_relaxation_length_mm;
 };
 
 struct TyreTestResult {

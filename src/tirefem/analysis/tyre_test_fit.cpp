@@ -16,6 +16,12 @@ RigData tyre_test_rig_data(const TyreTestResult& t) {
   for (const TyreTestLoad& l : t.loads)
     if (l.effective_rolling_radius_mm && l.Fz_N > 0)
       d.radii.push_back({l.Fz_N, *l.effective_rolling_radius_mm * 1e-3, l.loaded_radius_mm * 1e-3});
+  for (const TyreTestLoad& l : t.loads) {
+    RelaxationPoint p{l.Fz_N, {}, {}};
+    if (l.longitudinal_relaxation_length_mm) p.sigma_kappa = *l.longitudinal_relaxation_length_mm * 1e-3;
+    if (l.lateral_relaxation_length_mm) p.sigma_alpha = *l.lateral_relaxation_length_mm * 1e-3;
+    if (l.Fz_N > 0 && (p.sigma_kappa || p.sigma_alpha)) d.relaxation.push_back(p);
+  }
   if (t.vertical)
     for (const LoadPoint& p : t.vertical->points)
       if (p.patch.Qz_N > 0 && p.deflection_mm > 0) d.load_deflection.push_back({p.deflection_mm * 1e-3, p.patch.Qz_N});
@@ -58,6 +64,8 @@ TyreTestFit fit_tyre_test(const TyreTestResult& t, const TyreDescription& tyre, 
   f.header_comments = {
       fmt::format("tirefem virtual flat-track test '{}' of {} ({})", t.name, tyre.name, source),
       "steady-state PAC2002 coefficients fitted to finite-element rolling states (no dynamics, no speed effects)",
+      "relaxation lengths PTX*, PTY*: slip (cornering) stiffness over the standing tyre's longitudinal (lateral) "
+      "stiffness, tread glued to the plane",
       "coefficients marked 'not determined' hold their neutral values: the test did not excite them"};
   for (const std::string& key : fit.not_determined) f.notes[key] = "not determined by the test: neutral value";
   f.notes["WIDTH"] = "twice the carcass line's largest x";

@@ -162,4 +162,15 @@ double effective_rolling_radius(const MagicFormulaCoefficients& c, double Fz) {
          c.FNOMIN / c.VERTICAL_STIFFNESS * (c.DREFF * std::atan(c.BREFF * rho) + c.FREFF * rho);
 }
 
+RelaxationLengths relaxation_lengths(const MagicFormulaCoefficients& c, double Fz, double gamma) {
+  const double Fz0 = c.FNOMIN * c.LFZO, dfz = (Fz - Fz0) / Fz0, R0 = c.UNLOADED_RADIUS;
+  RelaxationLengths r;
+  r.sigma_kappa = Fz * (c.PTX1 + c.PTX2 * dfz) * std::exp(-c.PTX3 * dfz) * (R0 / Fz0) * c.LSGKP;
+  const double gamma_y = gamma * c.LGAY;
+  r.sigma_alpha = c.PTY2 != 0 ? c.PTY1 * std::sin(2 * std::atan(Fz / (c.PTY2 * Fz0))) * (1 - c.PKY3 * std::abs(gamma_y)) *
+                                    R0 * c.LFZO * c.LSGAL
+                              : 0.0;
+  return r;
+}
+
 }  // namespace tirefem

@@ -81,4 +81,13 @@ TyreForcesAndMoments evaluate_magic_formula(const MagicFormulaCoefficients& c, c
 // with Cz = VERTICAL_STIFFNESS, no speed terms.
 double effective_rolling_radius(const MagicFormulaCoefficients& c, double Fz);
 
+// Relaxation lengths of the transient model (MF-Tyre 5.2 / PAC2002), m:
+//   sigma_kappa = Fz (PTX1 + PTX2 dfz) exp(-PTX3 dfz) (R0/Fz0') LSGKP,
+//   sigma_alpha = PTY1 sin(2 atan(Fz/(PTY2 Fz0'))) (1 - PKY3 |gamma_y|) R0 LFZO LSGAL
+// (PTX1: sigma_kappa/R0 at FNOMIN; PTY1: the peak of sigma_alpha/R0, reached at Fz/Fz0' = PTY2).
+struct RelaxationLengths {
+  double sigma_kappa = 0, sigma_alpha = 0;
+};
+RelaxationLengths relaxation_lengths(const MagicFormulaCoefficients& c, double Fz, double gamma = 0.0);
+
 }  // namespace tirefem

@@ -87,6 +87,8 @@ RigFit fit_rig_data(const RigData& data) {
   std::vector<RollingRadiusPoint> radii;
   for (const RigLoadRadii& r : data.radii) radii.push_back({r.FZ, r.effective_radius});
   fit.errors.push_back(fit_effective_rolling_radius(radii, fit.coefficients, fit.not_determined));
+  for (const ChannelFitError& e : fit_relaxation_lengths(data.relaxation, fit.coefficients, fit.not_determined))
+    fit.errors.push_back(e);
 
   fit.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
   return fit;

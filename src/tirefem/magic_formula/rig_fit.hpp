@@ -1,6 +1,6 @@
 #pragma once
 // The whole PAC2002 fit of a (virtual) flat-track rig's table: pure longitudinal, pure lateral, aligning,
-// overturning moment, load-deflection and effective rolling radius, in that order.
+// overturning moment, load-deflection, effective rolling radius and the relaxation lengths, in that order.
 //
 // Point selection: the longitudinal group from points with alpha = 0 and gamma = 0; the lateral and aligning
 // groups from points with kappa = 0 (gamma = 0 for the pure-slip passes, the cambered sweeps for the camber
@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "tirefem/magic_formula/fitter.hpp"
+#include "tirefem/magic_formula/relaxation_fit.hpp"
 #include "tirefem/magic_formula/vertical_fit.hpp"
 
 namespace tirefem {
@@ -38,13 +39,14 @@ struct RigData {
   std::vector<RigPoint> points;
   std::vector<RigLoadRadii> radii;
   std::vector<LoadDeflectionPoint> load_deflection;  // (deflection, Fz); empty: R0 - loaded radius of `radii`
+  std::vector<RelaxationPoint> relaxation;           // per load, where measured (relaxation_fit.hpp)
   double FNOMIN = 0;           // N
   double UNLOADED_RADIUS = 0;  // m
 };
 
 struct RigFit {
   MagicFormulaCoefficients coefficients;      // undetermined coefficients hold their neutral values
-  std::vector<ChannelFitError> errors;        // Fx, Fy, Mz, Mx, Fz (load-deflection), Re
+  std::vector<ChannelFitError> errors;        // Fx, Fy, Mz, Mx, Fz (load-deflection), Re, sigma_kappa, sigma_alpha
   std::vector<std::string> not_determined;    // keys of the fitted groups that the data do not determine
   std::vector<GroupFitResult> groups;         // the three slip groups' details (evaluations, time)
   double seconds = 0;

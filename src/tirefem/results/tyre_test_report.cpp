@@ -181,6 +181,12 @@ toml::table tyre_test_summary(const TyreTestResult& t, const TyreTestFit* fit) {
     if (l.slip_stiffness_N) e.insert("slip_stiffness_N", *l.slip_stiffness_N);
     if (l.cornering_stiffness_N_per_deg) e.insert("cornering_stiffness_N_per_deg", *l.cornering_stiffness_N_per_deg);
     if (l.pneumatic_trail_mm) e.insert("pneumatic_trail_mm", *l.pneumatic_trail_mm);
+    if (l.longitudinal_stiffness_N_per_mm) e.insert("longitudinal_stiffness_N_per_mm", *l.longitudinal_stiffness_N_per_mm);
+    if (l.lateral_stiffness_N_per_mm) e.insert("lateral_stiffness_N_per_mm", *l.lateral_stiffness_N_per_mm);
+    if (l.yaw_stiffness_Nmm_per_rad) e.insert("yaw_stiffness_Nm_per_deg", *l.yaw_stiffness_Nmm_per_rad * 1e-3 * std::numbers::pi / 180);
+    if (l.longitudinal_relaxation_length_mm)
+      e.insert("longitudinal_relaxation_length_mm", *l.longitudinal_relaxation_length_mm);
+    if (l.lateral_relaxation_length_mm) e.insert("lateral_relaxation_length_mm", *l.lateral_relaxation_length_mm);
     loads.push_back(std::move(e));
   }
   toml::table s{{"name", t.name},
@@ -208,7 +214,8 @@ toml::table tyre_test_summary(const TyreTestResult& t, const TyreTestFit* fit) {
           {"Q_FZ1", c.Q_FZ1}, {"Q_FZ2", c.Q_FZ2}, {"BREFF", c.BREFF}, {"DREFF", c.DREFF}, {"FREFF", c.FREFF},
           {"PCX1", c.PCX1}, {"PDX1", c.PDX1}, {"PDX2", c.PDX2}, {"PEX1", c.PEX1}, {"PKX1", c.PKX1}, {"PKX2", c.PKX2},
           {"PKX3", c.PKX3}, {"PCY1", c.PCY1}, {"PDY1", c.PDY1}, {"PDY2", c.PDY2}, {"PEY1", c.PEY1}, {"PKY1", c.PKY1},
-          {"PKY2", c.PKY2}, {"QBZ1", c.QBZ1}, {"QCZ1", c.QCZ1}, {"QDZ1", c.QDZ1}, {"QSX1", c.QSX1}})
+          {"PKY2", c.PKY2}, {"QBZ1", c.QBZ1}, {"QCZ1", c.QCZ1}, {"QDZ1", c.QDZ1}, {"QSX1", c.QSX1}, {"PTX1", c.PTX1},
+          {"PTX2", c.PTX2}, {"PTX3", c.PTX3}, {"PTY1", c.PTY1}, {"PTY2", c.PTY2}})
       coefficients.insert(key, value);
     s.insert("magic_formula", toml::table{{"tir_file", t.name + "/" + t.name + ".tir"},
                                           {"fit_time_s", fit->seconds},
@@ -227,13 +234,21 @@ std::string tyre_test_fit_line(const TyreTestResult& t, const TyreTestFit& fit) 
   const MagicFormulaCoefficients& c = fit.tir.coefficients;
   // Public PAC2002 files of passenger tyres, for plausibility (Chrono's example data): 185/80R14 at FNOMIN
   // 3800 N and a 245-section sedan tyre at 4850 N.
+  // Their relaxation lengths at FNOMIN (evaluator.hpp): 185/80R14 sigma_kappa 715 mm, sigma_alpha 565 mm;
+  // sedan 814 mm, 593 mm.
+  const RelaxationLengths sigma = relaxation_lengths(c, c.FNOMIN);
+  const bool relaxation = c.PTX1 != 0 || c.PTY1 != 0;
   return fmt::format(
       "tyre test '{}': Magic Formula fitted in {:.2f} s, RMS error of peak {}; VERTICAL_STIFFNESS {:.0f} N/mm, "
-      "PKX1 {:.1f}, PKY1 {:.1f}, PDX1 {:.2f}, PDY1 {:.2f}, Re(FNOMIN) {:.1f} mm of R0 {:.1f} mm (public files: "
-      "185/80R14 175 N/mm, PKX1 19.7, PKY1 -12.5, PDX1 1.09, PDY1 0.94; 245-section sedan 281 N/mm, PKX1 22.3, "
-      "PKY1 -21.9, PDX1 1.17, PDY1 1.05)",
+      "PKX1 {:.1f}, PKY1 {:.1f}, PDX1 {:.2f}, PDY1 {:.2f}, Re(FNOMIN) {:.1f} mm of R0 {:.1f} mm{} (public files: "
+      "185/80R14 175 N/mm, PKX1 19.7, PKY1 -12.5, PDX1 1.09, PDY1 0.94{}; 245-section sedan 281 N/mm, PKX1 22.3, "
+      "PKY1 -21.9, PDX1 1.17, PDY1 1.05{})",
       t.name, fit.seconds, errors, c.VERTICAL_STIFFNESS * 1e-3, c.PKX1, c.PKY1, c.PDX1, c.PDY1,
-      effective_rolling_radius(c, c.FNOMIN) * 1e3, c.UNLOADED_RADIUS * 1e3);
+      effective_rolling_radius(c, c.FNOMIN) * 1e3, c.UNLOADED_RADIUS * 1e3,
+      relaxation ? fmt::format(", relaxation lengths at FNOMIN {:.0f} mm (longitudinal), {:.0f} mm (lateral)",
+                               sigma.sigma_kappa * 1e3, sigma.sigma_alpha * 1e3)
+                 : "",
+      relaxation ? ", 715 and 565 mm" : "", relaxation ? ", 814 and 593 mm" : "");
 }
 
 }  // namespace tirefem
