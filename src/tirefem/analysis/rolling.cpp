@@ -159,8 +159,8 @@ void add_mirrored_points(const std::vector<double>& mirrored, std::vector<SweepP
 // sweep's own points lie in the nonlinear range). Not sweep points: not reported as such.
 // The standing tyre's stiffness at the footprint, on a plane (a flat-plate test; analysis/standing_stiffness.hpp).
 void measure_standing_stiffness(const TyreMesh& tm, const TyreDescription& tyre, const InflationSettings& inflation,
-                                RollingResult& r, const ProgressSink& progress) {
-  if (r.support.kind != SupportDescription::Kind::plane) return;
+                                const RollingStudy& study, RollingResult& r, const ProgressSink& progress) {
+  if (r.support.kind != SupportDescription::Kind::plane || !study.standing_stiffness) return;
   const RoadPlane plane;
   r.standing_stiffness = standing_stiffness(tm, tyre, inflation.pressure, plane, r.deflection_mm,
                                             r.footprint.tread_points, r.footprint.final_state.displacement);
@@ -174,13 +174,19 @@ void measure_standing_stiffness(const TyreMesh& tm, const TyreDescription& tyre,
 }
 
 // σκ = Kxκ/Cx and σα = Kyα/Cy, where the study has both.
-void relaxation_lengths(RollingResult& r) {
+void relaxation_lengths(RollingResult& r, const ProgressSink& progress) {
   if (!r.standing_stiffness) return;
   const StandingStiffness& c = *r.standing_stiffness;
   if (r.slip_stiffness_N && c.longitudinal_N_per_mm > 0)
     r.longitudinal_relaxation_length_mm = *r.slip_stiffness_N / c.longitudinal_N_per_mm;
   if (r.cornering_stiffness_N_per_deg && c.lateral_N_per_mm && *c.lateral_N_per_mm > 0)
     r.lateral_relaxation_length_mm = std::abs(*r.cornering_stiffness_N_per_deg) / kDegree / *c.lateral_N_per_mm;
+  if (progress && r.longitudinal_relaxation_length_mm)
+    progress(fmt::format("  relaxation lengths: longitudinal {:.0f} mm (slip stiffness / Cx){}",
+                         *r.longitudinal_relaxation_length_mm,
+                         r.lateral_relaxation_length_mm
+                             ? fmt::format(", lateral {:.0f} mm (cornering stiffness / Cy)", *r.lateral_relaxation_length_mm)
+                             : ""));
 }
 
 constexpr double kProbeAngle = 0.2;  // degrees
@@ -264,7 +270,7 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
   }
   const auto t_rolling = Clock::now();
   place_axle_at_footprint(r, tm);
-  measure_standing_stiffness(tm, tyre, inflation, r, progress);
+  measure_standing_stiffness(tm, tyre, inflation, study, r, progress);
   RollingModel model(tm, tyre, inflation, contact, study, r);
   model.set_progress(progress);
 
@@ -413,7 +419,7 @@ RollingResult run_rolling(const TyreMesh& tm, const TyreDescription& tyre, const
       return a.slip != b.slip ? a.slip < b.slip : a.slip_angle_deg < b.slip_angle_deg;
     });
   }
-  relaxation_lengths(r);
+  relaxation_lengths(r, progress);
   r.completed = ok;
   model.finish(r.counters);
   r.counters.wall_s = seconds_since(t_rolling);

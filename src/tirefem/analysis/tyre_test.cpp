@@ -107,6 +107,7 @@ RollingStudy tyre_test_rolling_study(const TyreTestStudy& study, std::size_t loa
   r.friction = study.friction;
   r.tread_shear = RollingStudy::TreadShear::planar;
   r.mesh = lateral || !half ? rig_mesh : tyre_test_half_mesh(rig_mesh);
+  r.standing_stiffness = lateral;  // Cx, Cy and Cψ at once, on the full model
   // Cambered free rolling needs the full model: in the longitudinal series when that has it, else in the
   // lateral one (solved before its α sweep, which starts from free rolling all the same).
   const auto add_cambered_states = [&] {

@@ -270,6 +270,9 @@ struct RollingStudy {
   std::optional<CombinedSlipGrid> combined;
   // Its own mesh (the paper rolls on 80 × 46 while its static studies use 120 × 46); unset: the case's.
   std::optional<MeshSettings> mesh;
+  // The standing tyre's stiffness at the footprint (on a plane; analysis/standing_stiffness.hpp). Not a case
+  // field: a tyre test measures it once per load, in its lateral series on the full model.
+  bool standing_stiffness = true;
 };
 
 // A virtual flat-track tyre test (issue 12): at each load of `load_factors` × `nominal_load` the static
