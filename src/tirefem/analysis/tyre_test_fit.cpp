@@ -67,6 +67,19 @@ TyreTestFit fit_tyre_test(const TyreTestResult& t, const TyreDescription& tyre, 
       "relaxation lengths PTX*, PTY*: slip (cornering) stiffness over the standing tyre's longitudinal (lateral) "
       "stiffness, tread glued to the plane",
       "coefficients marked 'not determined' hold their neutral values: the test did not excite them"};
+  // The standing tyre's stiffness at the load nearest FNOMIN: MF 6.1 keeps it in [STRUCTURAL], which PAC2002
+  // has not; a comment, for the user of a transient or MF 6.1 model.
+  const TyreTestLoad* nominal = nullptr;
+  for (const TyreTestLoad& l : t.loads)
+    if (l.lateral_stiffness_N_per_mm &&
+        (!nominal || std::abs(l.Fz_N - t.nominal_load_N) < std::abs(nominal->Fz_N - t.nominal_load_N)))
+      nominal = &l;
+  if (nominal)
+    f.header_comments.push_back(fmt::format(
+        "standing tyre at Fz = {:.0f} N, tread glued to the plane: LONGITUDINAL_STIFFNESS {:.0f} N/m, "
+        "LATERAL_STIFFNESS {:.0f} N/m, YAW_STIFFNESS {:.0f} N m/rad (MF 6.1 [STRUCTURAL] keys)",
+        nominal->Fz_N, nominal->longitudinal_stiffness_N_per_mm.value_or(0.0) * 1e3, *nominal->lateral_stiffness_N_per_mm * 1e3,
+        nominal->yaw_stiffness_Nmm_per_rad.value_or(0.0) * 1e-3));
   for (const std::string& key : fit.not_determined) f.notes[key] = "not determined by the test: neutral value";
   f.notes["WIDTH"] = "twice the carcass line's largest x";
   f.notes["RIM_RADIUS"] = "bead point of the carcass line";
