@@ -4,15 +4,6 @@
 
 namespace tirefem {
 
-namespace {
-std::array<int, 12> outer_dofs(const std::array<int, 4>& pairs) {
-  std::array<int, 12> d{};
-  for (int a = 0; a < 4; ++a)
-    for (int c = 0; c < 3; ++c) d[3 * a + c] = outer_dof(pairs[a], c);
-  return d;
-}
-}  // namespace
-
 StuckTreadForm::StuckTreadForm(std::vector<TreadPoint> points, std::vector<Eigen::Vector3d> anchors,
                                std::vector<Eigen::Vector3d> normals, double shear_modulus)
     : points_(std::move(points)), anchors_(std::move(anchors)), normals_(std::move(normals)),
@@ -26,14 +17,11 @@ StuckTreadForm::StuckTreadForm(std::vector<TreadPoint> points, std::vector<Eigen
 }
 
 void StuckTreadForm::add_pattern(PatternBuilder& pattern) const {
-  for (const TreadPoint& p : points_) pattern.add_block(outer_dofs(p.pairs));
+  for (const TreadPoint& p : points_) pattern.add_block(tread_point_dofs(p));
 }
 
 Eigen::Vector3d StuckTreadForm::position(int q, const Eigen::VectorXd& u) const {
-  const TreadPoint& p = points_[q];
-  Eigen::Vector3d x = p.reference;
-  for (int a = 0; a < 4; ++a) x += p.shape[a] * u.segment<3>(outer_dof(p.pairs[a], 0));
-  return x;
+  return tread_point_position(points_[q], u);
 }
 
 Eigen::Vector3d StuckTreadForm::road_displacement(int q) const {
@@ -70,7 +58,7 @@ void StuckTreadForm::assemble(const FormInput& input, SparseSystem& system) cons
       f.segment<3>(3 * a) = p.shape[a] * point_residual;
       for (int b = 0; b < 4; ++b) k.block<3, 3>(3 * a, 3 * b) = p.shape[a] * p.shape[b] * point_tangent;
     }
-    batch.set(q, outer_dofs(p.pairs), f, k, input.with_tangent);
+    batch.set(q, tread_point_dofs(p), f, k, input.with_tangent);
   }
   system.add(batch);
 }

@@ -53,24 +53,26 @@ WinklerContactForm::WinklerContactForm(const ShellMesh& mesh, std::vector<TreadP
   element_begin_.push_back(static_cast<int>(points_.size()));
 }
 
-namespace {
-std::array<int, 12> outer_dofs(const std::array<int, 4>& pairs) {
+std::array<int, 12> tread_point_dofs(const TreadPoint& p) {
   std::array<int, 12> d{};
   for (int a = 0; a < 4; ++a)
-    for (int c = 0; c < 3; ++c) d[3 * a + c] = outer_dof(pairs[a], c);
+    for (int c = 0; c < 3; ++c) d[3 * a + c] = outer_dof(p.pairs[a], c);
   return d;
 }
-}  // namespace
 
-void WinklerContactForm::add_pattern(PatternBuilder& pattern) const {
-  for (std::size_t k = 0; k + 1 < element_begin_.size(); ++k)
-    pattern.add_block(outer_dofs(points_[element_begin_[k]].pairs));
-}
-
-Eigen::Vector3d WinklerContactForm::position(const TreadPoint& p, const Eigen::VectorXd& u) const {
+Eigen::Vector3d tread_point_position(const TreadPoint& p, const Eigen::VectorXd& u) {
   Eigen::Vector3d x = p.reference;
   for (int a = 0; a < 4; ++a) x += p.shape[a] * u.segment<3>(outer_dof(p.pairs[a], 0));
   return x;
+}
+
+void WinklerContactForm::add_pattern(PatternBuilder& pattern) const {
+  for (std::size_t k = 0; k + 1 < element_begin_.size(); ++k)
+    pattern.add_block(tread_point_dofs(points_[element_begin_[k]]));
+}
+
+Eigen::Vector3d WinklerContactForm::position(const TreadPoint& p, const Eigen::VectorXd& u) const {
+  return tread_point_position(p, u);
 }
 
 bool WinklerContactForm::carries_load(int point, double penetration) const {
@@ -107,7 +109,7 @@ void WinklerContactForm::assemble(const FormInput& input, SparseSystem& system) 
           tangent.block<3, 3>(3 * a, 3 * b) += p.shape[a] * p.shape[b] * point_tangent;
       }
     }
-    if (any) batch.set(k, outer_dofs(points_[element_begin_[k]].pairs), f, tangent, input.with_tangent);
+    if (any) batch.set(k, tread_point_dofs(points_[element_begin_[k]]), f, tangent, input.with_tangent);
   }
   system.add(batch);
 }

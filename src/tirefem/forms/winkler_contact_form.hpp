@@ -43,6 +43,10 @@ struct TreadPoint {
 std::vector<TreadPoint> make_tread_points(const ShellMesh& mesh, const std::vector<int>& elements,
                                           int quadrature, const std::function<double(double u)>& tread_height);
 
+// The 12 outer-face DOFs that move a tread point (its element's node pairs), and its position at u.
+std::array<int, 12> tread_point_dofs(const TreadPoint& p);
+Eigen::Vector3d tread_point_position(const TreadPoint& p, const Eigen::VectorXd& u);
+
 // State of one tread point at a displacement.
 struct TreadPointState {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // current tread point x = r0 + u_b
