@@ -139,6 +139,25 @@ TEST(TyreTestReport, TheTwoSeriesOfALoadMakeOneLoad) {
   EXPECT_EQ(t.loads[0].slip_stiffness_N, 60000.0);
   EXPECT_EQ(t.loads[0].cornering_stiffness_N_per_deg, -750.0);
   EXPECT_EQ(t.loads[0].pneumatic_trail_mm, 30.0);
+  // No standing stiffness measured: no relaxation lengths; the loads table says nan, the plot has nothing.
+  EXPECT_FALSE(t.loads[0].longitudinal_relaxation_length_mm || t.loads[0].lateral_relaxation_length_mm);
+  EXPECT_TRUE(std::isnan(tyre_test_loads_table(t).rows.at(0).back()));
+  EXPECT_TRUE(tyre_test_relaxation_plot(t).series.empty());
+  // The lateral series measured it (full model): σκ = Kxκ/Cx, σα = |Kyα| (per radian)/Cy, in the table.
+  StandingStiffness c;
+  c.longitudinal_N_per_mm = 200.0;
+  c.lateral_N_per_mm = 100.0;
+  c.yaw_Nmm_per_rad = 2e6;
+  lateral.standing_stiffness = c;
+  t = assemble_tyre_test(s, 285.0, {{{&longitudinal, &lateral}, {"", ""}}}, std::nullopt, "");
+  EXPECT_EQ(t.loads[0].longitudinal_stiffness_N_per_mm, 200.0);
+  EXPECT_DOUBLE_EQ(*t.loads[0].longitudinal_relaxation_length_mm, 60000.0 / 200.0);
+  EXPECT_DOUBLE_EQ(*t.loads[0].lateral_relaxation_length_mm, 750.0 * 180.0 / std::numbers::pi / 100.0);
+  const CsvTable loads = tyre_test_loads_table(t);
+  ASSERT_EQ(loads.rows.size(), 1u);
+  EXPECT_DOUBLE_EQ(loads.rows[0].back(), *t.loads[0].lateral_relaxation_length_mm);
+  EXPECT_NEAR(loads.rows[0][12], 2e3 * std::numbers::pi / 180.0, 1e-12);  // yaw, N·m per degree
+  EXPECT_EQ(tyre_test_relaxation_plot(t).series.size(), 2u);  // the points, without a fit
 
   t = assemble_tyre_test(s, 285.0, {{{&longitudinal, nullptr}, {"", "tyre test 'rig_Fz4000_alpha' failed: singular"}}},
                          std::nullopt, "");

@@ -152,11 +152,14 @@ toml::table report_tyre_test(const ResultsFolder& folder, ReportWriter& plots, c
   plots.attempt("tyre test '" + t.name + "'", [&] {
     write_csv(folder.path(t.name + "/tyre_test.csv"), tyre_test_table(t));
     if (t.vertical) write_csv(folder.path(t.name + "/vertical.csv"), tyre_test_vertical_table(t));
+    write_csv(folder.path(t.name + "/loads.csv"), tyre_test_loads_table(t));
     if (f) write_tir_file(folder.path(t.name + "/" + t.name + ".tir"), f->tir);
     plots.plot(t.name + "_fx_kappa", tyre_test_fx_plot(t, f));
     plots.plot(t.name + "_fy_alpha", tyre_test_fy_plot(t, f));
     plots.plot(t.name + "_mz_alpha", tyre_test_mz_plot(t, f));
     plots.plot(t.name + "_vertical", tyre_test_vertical_plot(t, f));
+    if (const Plot relaxation = tyre_test_relaxation_plot(t, f); !relaxation.series.empty())
+      plots.plot(t.name + "_relaxation", relaxation);
   });
   return tyre_test_summary(t, f);
 }

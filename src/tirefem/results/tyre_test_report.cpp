@@ -120,6 +120,55 @@ CsvTable tyre_test_vertical_table(const TyreTestResult& t) {
   return table;
 }
 
+CsvTable tyre_test_loads_table(const TyreTestResult& t) {
+  CsvTable table;
+  table.comments = {fmt::format("tirefem: per load of tyre test '{}': static footprint, free rolling, and the "
+                                "standing tyre (tread glued to the plane); relaxation length = slip (cornering) "
+                                "stiffness / longitudinal (lateral) stiffness; nan: not measured",
+                                t.name)};
+  table.columns = {"target_load_N", "Fz_N", "deflection_mm", "loaded_radius_mm", "effective_rolling_radius_mm",
+                   "patch_length_mm", "patch_width_mm", "slip_stiffness_N", "cornering_stiffness_N_per_deg",
+                   "pneumatic_trail_mm", "longitudinal_stiffness_N_per_mm", "lateral_stiffness_N_per_mm",
+                   "yaw_stiffness_Nm_per_deg", "longitudinal_relaxation_length_mm", "lateral_relaxation_length_mm"};
+  const auto v = [](const std::optional<double>& x, double scale = 1.0) { return x ? *x * scale : kNaN; };
+  for (const TyreTestLoad& l : t.loads)
+    table.rows.push_back({l.target_load_N, l.Fz_N, l.deflection_mm, l.loaded_radius_mm, v(l.effective_rolling_radius_mm),
+                          l.patch_length_mm, l.patch_width_mm, v(l.slip_stiffness_N), v(l.cornering_stiffness_N_per_deg),
+                          v(l.pneumatic_trail_mm), v(l.longitudinal_stiffness_N_per_mm), v(l.lateral_stiffness_N_per_mm),
+                          v(l.yaw_stiffness_Nmm_per_rad, 1e-3 * std::numbers::pi / 180), v(l.longitudinal_relaxation_length_mm),
+                          v(l.lateral_relaxation_length_mm)});
+  return table;
+}
+
+Plot tyre_test_relaxation_plot(const TyreTestResult& t, const TyreTestFit* fit) {
+  Plot p{fmt::format("{}: relaxation lengths (stiffness of the rolling tyre over the standing tyre's)", t.name), "Fz [N]",
+         "relaxation length [mm]", {}};
+  PlotSeries kappa{"longitudinal, slip stiffness / Cx", {}, {}, "points pt 7 ps 1.5"};
+  PlotSeries alpha{"lateral, cornering stiffness / Cy", {}, {}, "points pt 5 ps 1.5"};
+  double top = 0;
+  for (const TyreTestLoad& l : t.loads) {
+    if (l.longitudinal_relaxation_length_mm) kappa.x.push_back(l.Fz_N), kappa.y.push_back(*l.longitudinal_relaxation_length_mm);
+    if (l.lateral_relaxation_length_mm) alpha.x.push_back(l.Fz_N), alpha.y.push_back(*l.lateral_relaxation_length_mm);
+    top = std::max(top, l.Fz_N);
+  }
+  const bool measured = !kappa.x.empty() || !alpha.x.empty();
+  if (fit && measured) {
+    const MagicFormulaCoefficients& c = fit->tir.coefficients;
+    PlotSeries mk{"Magic Formula (PTX1-PTX3)", {}, {}, "lines"}, ma{"Magic Formula (PTY1, PTY2)", {}, {}, "lines"};
+    for (int i = 1; i <= 40; ++i) {
+      const double Fz = 1.1 * top * i / 40.0;
+      const RelaxationLengths r = relaxation_lengths(c, Fz);
+      if (!kappa.x.empty()) mk.x.push_back(Fz), mk.y.push_back(r.sigma_kappa * 1e3);
+      if (!alpha.x.empty()) ma.x.push_back(Fz), ma.y.push_back(r.sigma_alpha * 1e3);
+    }
+    for (PlotSeries* s : {&mk, &ma})
+      if (!s->x.empty()) p.series.push_back(std::move(*s));
+  }
+  for (PlotSeries* s : {&kappa, &alpha})
+    if (!s->x.empty()) p.series.push_back(std::move(*s));
+  return p;
+}
+
 namespace {
 // FX(κ), FY(α) or MZ(α) of every load's sweep, with the fit's curves.
 Plot sweep_plot(const TyreTestResult& t, const TyreTestFit* fit, Channel channel) {

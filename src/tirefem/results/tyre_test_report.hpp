@@ -17,6 +17,9 @@ CsvTable tyre_test_table(const TyreTestResult& result);
 // The load–deflection curve: Qz (N) against δz (mm) from the undeformed tyre, the half model's figures
 // for the full tyre.
 CsvTable tyre_test_vertical_table(const TyreTestResult& result);
+// Per load: the footprint's and free rolling's figures, the slip and cornering stiffness, and the standing
+// tyre's stiffness and relaxation lengths (nan where not measured).
+CsvTable tyre_test_loads_table(const TyreTestResult& result);
 
 // FX(κ), FY(α), MZ(α) at every load (FE points; with `fit`, the Magic Formula's pure-slip curves at each
 // load's Fz), and the vertical characteristic.
@@ -24,6 +27,9 @@ Plot tyre_test_fx_plot(const TyreTestResult& result, const TyreTestFit* fit = nu
 Plot tyre_test_fy_plot(const TyreTestResult& result, const TyreTestFit* fit = nullptr);
 Plot tyre_test_mz_plot(const TyreTestResult& result, const TyreTestFit* fit = nullptr);
 Plot tyre_test_vertical_plot(const TyreTestResult& result, const TyreTestFit* fit = nullptr);
+// The relaxation lengths σκ and σα (mm) against Fz: the rig's (K/C per load) and, with `fit`, the .tir's
+// (PTX*, PTY*). No series when the rig measured none.
+Plot tyre_test_relaxation_plot(const TyreTestResult& result, const TyreTestFit* fit = nullptr);
 
 toml::table tyre_test_summary(const TyreTestResult& result, const TyreTestFit* fit = nullptr);
 // One line for the progress output: the fit's errors and the FNOMIN-normalised figures beside those of
