@@ -57,7 +57,10 @@ std::optional<StandingStiffness> standing_stiffness(const TyreMesh& tm, const Ty
   problem.evaluate(u, 1.0, true);
   SparseDirectSolver solver(problem.symmetric());
   solver.factorize(problem.system().tangent());
-  s.factorizations = 1;
+  s.factorizations = solver.stats().factorizations;
+  s.assembly_s = problem.stats().assembly_s;
+  s.analysis_s = solver.stats().analysis_s;
+  s.factorization_s = solver.stats().factorization_s;
 
   // The response to a road motion: the load it puts on the tyre where the tyre has not moved yet (x = a),
   // the tyre's displacement under it, and the road's force and moment on the tyre then.

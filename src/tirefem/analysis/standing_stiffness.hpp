@@ -29,6 +29,7 @@ struct StandingStiffness {
   Eigen::Vector3d centre_mm = Eigen::Vector3d::Zero();  // the centre of pressure the road turns about
   int contact_points = 0;
   int factorizations = 0;
+  double assembly_s = 0.0, analysis_s = 0.0, factorization_s = 0.0;  // of the tangent, its ordering, its factor
   double time_s = 0.0;
 };
 

@@ -291,6 +291,8 @@ toml::table rolling_summary(const RollingResult& r) {
     if (c.yaw_Nmm_per_rad) st.insert("yaw_Nm_per_deg", *c.yaw_Nmm_per_rad * 1e-3 / kDeg);
     st.insert("tread_shear_N_per_mm", c.tread_shear_N_per_mm);
     st.insert("factorizations", c.factorizations);
+    st.insert("assembly_time_s", c.assembly_s);
+    st.insert("factorization_time_s", c.analysis_s + c.factorization_s);  // with its symbolic analysis
     st.insert("time_s", c.time_s);
     t.insert("standing_stiffness", std::move(st));
   }
