@@ -4,9 +4,12 @@
 // The form: its tangent against central differences of its residual and its residual against differences
 // of its energy, with the road translated and turned and the normals tilted (a drum-like patch); a tyre
 // that moves with the road in the road's plane, or along the normal, is not sheared.
-// The analysis, on the example tyre at 3000 N (40 × 12 per half): the half model's longitudinal stiffness
+// The analysis, on the example tyre at 2000 N (64 × 16 per half, equal elements: a stable footprint): the half model's longitudinal stiffness
 // equals the full model's (the half is doubled); each stiffness is positive and below the tread's own
-// Σ (G/hp) w (the carcass is in series with it). The rigid-carcass limit is in CorneringBrush.*.
+// Σ (G/hp) w (the carcass is in series with it); each response is the derivative of the equilibrium path:
+// moving the road by ε times the motion and the tyre by ε times its response leaves the whole static
+// residual (shell, pressure, Winkler tread, glued tread) at its converged value to O(ε²). The
+// rigid-carcass limit is in CorneringBrush.*.
 #include <cmath>
 #include <cstdio>
 
@@ -15,6 +18,8 @@
 #include "contact_support.hpp"
 #include "form_fd_support.hpp"
 #include "tirefem/analysis/standing_stiffness.hpp"
+#include "tirefem/analysis/tyre_shell_forms.hpp"
+#include "tirefem/forms/pressure_form.hpp"
 #include "tirefem/forms/stuck_tread_form.hpp"
 
 namespace tirefem::verification {
@@ -85,24 +90,62 @@ TEST(StuckTread, NoShearWhenTheTyreMovesWithTheRoad) {
 }
 
 struct Standing {
+  TyreMesh tm;
   StaticContactResult footprint;
   std::optional<StandingStiffness> stiffness;
+  std::vector<Eigen::VectorXd> responses;
 };
 
 Standing standing(bool half_model) {
   const Case& c = example_case();
-  const TyreMesh tm = build_tyre_mesh(c.tyre, coarse_mesh(40, 12, half_model));
+  Standing s{build_tyre_mesh(c.tyre, coarse_mesh(64, 16, half_model, 1.0)), {}, {}, {}};
+  const TyreMesh& tm = s.tm;
   FootprintStudy fs;
   fs.name = "standing";
-  fs.target_load = 3000.0;
-  Standing s;
+  fs.target_load = 2000.0;
   s.footprint = run_footprint(tm, c.tyre, c.inflation, test_contact_settings(ContactSettings::Iteration::single_loop), fs);
   EXPECT_TRUE(s.footprint.completed) << s.footprint.failure;
   if (!s.footprint.completed) return s;
   const RoadPlane plane;
   s.stiffness = standing_stiffness(tm, c.tyre, c.inflation.pressure, plane, s.footprint.final_state.deflection_mm,
-                                   s.footprint.tread_points, s.footprint.final_state.displacement);
+                                   s.footprint.tread_points, s.footprint.final_state.displacement, &s.responses);
   return s;
+}
+
+// The static residual over the free DOFs at u with the road moved by `motion`: the tyre (shell, closed
+// pressure), the Winkler tread frozen to its region at `base`, and the tread glued where it stood at `base`
+// (as analysis/standing_stiffness.cpp builds it).
+Eigen::VectorXd static_residual(const Standing& s, const Eigen::VectorXd& u, const RoadMotion& motion) {
+  const Case& c = example_case();
+  const TyreMesh& tm = s.tm;
+  const Eigen::VectorXd& base = s.footprint.final_state.displacement;
+  const RoadPlane plane;
+  const double deflection = s.footprint.final_state.deflection_mm;
+  auto winkler = std::make_unique<WinklerContactForm>(tm.mesh, s.footprint.tread_points, c.tyre.tread_stiffness, plane);
+  winkler->set_deflection(deflection);
+  std::vector<TreadPoint> stuck;
+  std::vector<Eigen::Vector3d> anchors, normals;
+  const std::vector<TreadPointState> states = winkler->evaluate(base);
+  for (std::size_t q = 0; q < states.size(); ++q)
+    if (states[q].penetration > 0 && winkler->points()[q].height > 0) {
+      stuck.push_back(winkler->points()[q]);
+      anchors.push_back(states[q].position);
+      normals.push_back(Eigen::Vector3d::UnitZ());
+    }
+  winkler->freeze_region(winkler->region(base));
+  auto glued = std::make_unique<StuckTreadForm>(stuck, anchors, normals, c.tyre.tread_shear_modulus);
+  glued->set_road_motion(motion);
+  DofMap dofs(tm.mesh.dof_count());
+  dofs.fix(tm.fixed_dofs);
+  std::vector<std::unique_ptr<Form>> forms;
+  add_tyre_shell_forms(forms, tm, Kinematics::nonlinear);
+  forms.push_back(std::make_unique<PressureForm>(tm.mesh, tm.pressure_elements, c.inflation.pressure,
+                                                 Kinematics::nonlinear, true));
+  forms.push_back(std::move(winkler));
+  forms.push_back(std::move(glued));
+  NonlinearProblem problem(dofs, std::move(forms));
+  problem.evaluate(u, 1.0, false);
+  return dofs.gather(problem.system().residual());
 }
 
 TEST(StandingStiffness, HalfModelEqualsFullAndTheTreadIsInSeriesWithTheCarcass) {
@@ -110,7 +153,7 @@ TEST(StandingStiffness, HalfModelEqualsFullAndTheTreadIsInSeriesWithTheCarcass) 
   ASSERT_TRUE(half.stiffness && full.stiffness);
   const StandingStiffness& h = *half.stiffness;
   const StandingStiffness& f = *full.stiffness;
-  std::printf("  40 x 12, 3000 N: Cx half %.3f / full %.3f N/mm, Cy %.3f N/mm, yaw %.1f N·m/rad; tread alone %.1f / %.1f "
+  std::printf("  64 x 16, 2000 N: Cx half %.3f / full %.3f N/mm, Cy %.3f N/mm, yaw %.1f N·m/rad; tread alone %.1f / %.1f "
               "N/mm; %d / %d points in contact\n", h.longitudinal_N_per_mm, f.longitudinal_N_per_mm,
               f.lateral_N_per_mm.value_or(0.0), f.yaw_Nmm_per_rad.value_or(0.0) * 1e-3, h.tread_shear_N_per_mm,
               f.tread_shear_N_per_mm, h.contact_points, f.contact_points);
@@ -124,6 +167,35 @@ TEST(StandingStiffness, HalfModelEqualsFullAndTheTreadIsInSeriesWithTheCarcass) 
   }
   EXPECT_GT(*f.yaw_Nmm_per_rad, 0.0);
   EXPECT_EQ(f.factorizations, 1);
+  EXPECT_TRUE(f.stable && h.stable);
+
+  // The responses (full model): the road moved by ε × each motion, the tyre by ε × its response.
+  ASSERT_EQ(full.responses.size(), 3u);
+  const Eigen::VectorXd& base = full.footprint.final_state.displacement;
+  const Eigen::VectorXd r0 = static_residual(full, base, RoadMotion{});
+  RoadMotion along, across, turn;
+  along.translation = Eigen::Vector3d::UnitY();
+  across.translation = Eigen::Vector3d::UnitX();
+  turn.turn = 1.0;
+  turn.centre = f.centre_mm;
+  const RoadMotion motions[3] = {along, across, turn};
+  const char* names[3] = {"along", "across", "turn"};
+  for (int m = 0; m < 3; ++m) {
+    // ε: 0.01 and 0.001 mm of road travel (the turn: the same at 100 mm from the centre).
+    double error[2];
+    for (int k = 0; k < 2; ++k) {
+      const double eps = (k == 0 ? 1.0 : 0.1) * (m == 2 ? 1e-4 : 1e-2);
+      RoadMotion moved = motions[m];
+      moved.translation *= eps;
+      moved.turn *= eps;
+      const Eigen::VectorXd load = r0 - static_residual(full, base, moved);  // the road's pull on the standing tyre
+      error[k] = (static_residual(full, base + eps * full.responses[m], moved) - r0).norm() / load.norm();
+    }
+    std::printf("  road moved %s: residual left %.2e, %.2e of the load (ε, ε/10)\n", names[m], error[0], error[1]);
+    EXPECT_GT(error[0] / error[1], 8.0) << names[m];  // O(ε²): ten times less for ε/10
+    EXPECT_LT(error[0] / error[1], 12.0) << names[m];
+    EXPECT_LT(error[1], 1e-3) << names[m];
+  }
 }
 
 }  // namespace

@@ -171,6 +171,9 @@ void measure_standing_stiffness(const TyreMesh& tm, const TyreDescription& tyre,
                        c.lateral_N_per_mm ? fmt::format(", lateral {:.1f} N/mm", *c.lateral_N_per_mm) : "",
                        c.yaw_Nmm_per_rad ? fmt::format(", yaw {:.1f} N·m/deg", *c.yaw_Nmm_per_rad * 1e-3 * kDegree) : "",
                        c.time_s));
+  if (!c.stable)
+    progress("  warning: the footprint's tangent is indefinite (an unstable state): its standing stiffness describes "
+             "no state the tyre would stay in");
 }
 
 // σκ = Kxκ/Cx and σα = Kyα/Cy, where the study has both.

@@ -13,7 +13,8 @@ namespace tirefem {
 std::optional<StandingStiffness> standing_stiffness(const TyreMesh& tm, const TyreDescription& tyre,
                                                     double pressure, const SupportSurface& support,
                                                     double deflection, const std::vector<TreadPoint>& points,
-                                                    const Eigen::VectorXd& u) {
+                                                    const Eigen::VectorXd& u,
+                                                    std::vector<Eigen::VectorXd>* responses) {
   const auto t0 = std::chrono::steady_clock::now();
   StandingStiffness s;
   // The points in contact (with tread on them), where they stand, and the road's normal there.
@@ -58,6 +59,7 @@ std::optional<StandingStiffness> standing_stiffness(const TyreMesh& tm, const Ty
   SparseDirectSolver solver(problem.symmetric());
   solver.factorize(problem.system().tangent());
   s.factorizations = solver.stats().factorizations;
+  s.stable = solver.stats().failed_cholesky == 0;
   s.assembly_s = problem.stats().assembly_s;
   s.analysis_s = solver.stats().analysis_s;
   s.factorization_s = solver.stats().factorization_s;
@@ -74,6 +76,7 @@ std::optional<StandingStiffness> standing_stiffness(const TyreMesh& tm, const Ty
     }
     Eigen::VectorXd du = Eigen::VectorXd::Zero(u.size());
     problem.dofs().scatter_add(solver.solve(problem.dofs().gather(load)), du);
+    if (responses) responses->push_back(du);
     return tread.resultant(u + du, s.centre_mm);
   };
   RoadMotion along;

@@ -28,6 +28,7 @@ struct StandingStiffness {
   double tread_shear_N_per_mm = 0.0;        // Σ (G/hp) w over the points in contact: Cx and Cy of a rigid carcass
   Eigen::Vector3d centre_mm = Eigen::Vector3d::Zero();  // the centre of pressure the road turns about
   int contact_points = 0;
+  bool stable = true;  // the glued tyre's tangent positive definite (else the footprint was an unstable state)
   int factorizations = 0;
   double assembly_s = 0.0, analysis_s = 0.0, factorization_s = 0.0;  // of the tangent, its ordering, its factor
   double time_s = 0.0;
@@ -35,9 +36,12 @@ struct StandingStiffness {
 
 // At the converged static state u (support moved up by `deflection`) of the inflated tyre; `points` the
 // tread points of that state (StaticContactResult::tread_points). Nothing when no point is in contact.
+// `responses`, when given, receives the tyre's displacement per unit of each road motion (full length: along
+// the travel, and on the full model across it and the turn, in that order).
 std::optional<StandingStiffness> standing_stiffness(const TyreMesh& tm, const TyreDescription& tyre,
                                                     double pressure, const SupportSurface& support,
                                                     double deflection, const std::vector<TreadPoint>& points,
-                                                    const Eigen::VectorXd& u);
+                                                    const Eigen::VectorXd& u,
+                                                    std::vector<Eigen::VectorXd>* responses = nullptr);
 
 }  // namespace tirefem

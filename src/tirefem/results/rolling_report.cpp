@@ -290,6 +290,7 @@ toml::table rolling_summary(const RollingResult& r) {
     if (c.lateral_N_per_mm) st.insert("lateral_N_per_mm", *c.lateral_N_per_mm);
     if (c.yaw_Nmm_per_rad) st.insert("yaw_Nm_per_deg", *c.yaw_Nmm_per_rad * 1e-3 / kDeg);
     st.insert("tread_shear_N_per_mm", c.tread_shear_N_per_mm);
+    st.insert("stable", c.stable);
     st.insert("factorizations", c.factorizations);
     st.insert("assembly_time_s", c.assembly_s);
     st.insert("factorization_time_s", c.analysis_s + c.factorization_s);  // with its symbolic analysis
