@@ -162,8 +162,13 @@ void measure_standing_stiffness(const TyreMesh& tm, const TyreDescription& tyre,
                                 const RollingStudy& study, RollingResult& r, const ProgressSink& progress) {
   if (r.support.kind != SupportDescription::Kind::plane || !study.standing_stiffness) return;
   const RoadPlane plane;
-  r.standing_stiffness = standing_stiffness(tm, tyre, inflation.pressure, plane, r.deflection_mm,
-                                            r.footprint.tread_points, r.footprint.final_state.displacement);
+  try {
+    r.standing_stiffness = standing_stiffness(tm, tyre, inflation.pressure, plane, r.deflection_mm,
+                                              r.footprint.tread_points, r.footprint.final_state.displacement);
+  } catch (const std::exception& e) {  // a side measurement: the rolling states go on without it
+    if (progress) progress(fmt::format("  standing stiffness not measured: {}", e.what()));
+    return;
+  }
   if (!progress || !r.standing_stiffness) return;
   const StandingStiffness& c = *r.standing_stiffness;
   progress(fmt::format("  standing tyre, tread glued to the plane: longitudinal stiffness {:.1f} N/mm{}{} ({:.2f} s)",
