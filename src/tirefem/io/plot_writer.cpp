@@ -208,7 +208,7 @@ bool write_plot(const fs::path& stem, const Plot& plot, PlotRenderer* renderer) 
   Buffer gp;
   auto o = std::back_inserter(gp);
   write_header(gp, stem, plot.title, plot.x_label, plot.y_label);
-  fmt::format_to(o, "set grid\nset key opaque box\n");
+  fmt::format_to(o, "set grid\nset key opaque box{}\n", plot.key_top_left ? " top left" : "");
   if (plot.x_reversed) fmt::format_to(o, "set xrange [*:*] reverse\n");
   std::string command = "plot";
   for (std::size_t k = 0; k < plot.series.size(); ++k) {

@@ -28,6 +28,7 @@ struct Plot {
   std::string title, x_label, y_label;  // labels with units, e.g. "deflection [mm]"
   std::vector<PlotSeries> series;
   bool x_reversed = false;
+  bool key_top_left = false;  // the key in the top left corner (default: top right), where the data rise to the right
 };
 
 // A colour map of values on a rectilinear grid (gnuplot pm3d seen from above). Each quadrilateral between

@@ -143,6 +143,7 @@ CsvTable tyre_test_loads_table(const TyreTestResult& t) {
 Plot tyre_test_relaxation_plot(const TyreTestResult& t, const TyreTestFit* fit) {
   Plot p{fmt::format("{}: relaxation lengths (stiffness of the rolling tyre over the standing tyre's)", t.name), "Fz [N]",
          "relaxation length [mm]", {}};
+  p.key_top_left = true;  // the lengths grow with the load
   PlotSeries kappa{"longitudinal, slip stiffness / Cx", {}, {}, "points pt 7 ps 1.5"};
   PlotSeries alpha{"lateral, cornering stiffness / Cy", {}, {}, "points pt 5 ps 1.5"};
   double top = 0;
