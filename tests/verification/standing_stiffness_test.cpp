@@ -27,7 +27,7 @@ namespace {
 
 // The patch mesh's tread points, anchored near where they stand (offsets of ±0.3 mm), the normals those
 // of a drum of radius 500 mm below the patch.
-StuckTreadForm* stuck_form(SingleFormProblem<StuckTreadForm>*& keep, const ShellMesh& mesh) {
+std::unique_ptr<SingleFormProblem<StuckTreadForm>> stuck_form(const ShellMesh& mesh) {
   std::vector<TreadPoint> points = patch_points(mesh);
   std::vector<Eigen::Vector3d> anchors, normals;
   const Eigen::VectorXd offsets = random_vector(3 * static_cast<int>(points.size()), 21, 0.3);
@@ -35,17 +35,15 @@ StuckTreadForm* stuck_form(SingleFormProblem<StuckTreadForm>*& keep, const Shell
     anchors.push_back(points[q].reference + offsets.segment<3>(3 * q));
     normals.push_back(Eigen::Vector3d(0.0, -points[q].reference.y(), 500.0).normalized());
   }
-  keep = new SingleFormProblem<StuckTreadForm>(
+  return std::make_unique<SingleFormProblem<StuckTreadForm>>(
       mesh, std::make_unique<StuckTreadForm>(points, anchors, normals, 0.8));
-  return keep->form;
 }
 
 TEST(StuckTread, TangentAndEnergyAreTheDerivativesOfItsResidual) {
   SingleThread one_thread;
   const ShellMesh mesh = tyre_patch_mesh();
-  SingleFormProblem<StuckTreadForm>* p = nullptr;
-  StuckTreadForm* form = stuck_form(p, mesh);
-  const std::unique_ptr<SingleFormProblem<StuckTreadForm>> owner(p);
+  const auto p = stuck_form(mesh);
+  StuckTreadForm* form = p->form;
   RoadMotion motion;
   motion.translation = Eigen::Vector3d(0.4, -0.7, 0.2);
   motion.turn = 0.01;
