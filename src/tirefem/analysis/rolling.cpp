@@ -154,9 +154,6 @@ void add_mirrored_points(const std::vector<double>& mirrored, std::vector<SweepP
   }
 }
 
-// dFy/dα and the pneumatic trail at α = 0 (κ and γ of the sweep): central differences over ±kProbeAngle,
-// two extra solves near the straight-ahead state, where the patch still sticks almost everywhere (the
-// sweep's own points lie in the nonlinear range). Not sweep points: not reported as such.
 // The standing tyre's stiffness at the footprint, on a plane (a flat-plate test; analysis/standing_stiffness.hpp).
 void measure_standing_stiffness(const TyreMesh& tm, const TyreDescription& tyre, const InflationSettings& inflation,
                                 const RollingStudy& study, RollingResult& r, const ProgressSink& progress) {
@@ -174,7 +171,7 @@ void measure_standing_stiffness(const TyreMesh& tm, const TyreDescription& tyre,
   progress(fmt::format("  standing tyre, tread glued to the plane: longitudinal stiffness {:.1f} N/mm{}{} ({:.2f} s)",
                        c.longitudinal_N_per_mm,
                        c.lateral_N_per_mm ? fmt::format(", lateral {:.1f} N/mm", *c.lateral_N_per_mm) : "",
-                       c.yaw_Nmm_per_rad ? fmt::format(", yaw {:.1f} N·m/deg", *c.yaw_Nmm_per_rad * 1e-3 * kDegree) : "",
+                       c.yaw_Nmm_per_rad ? fmt::format(", yaw {:.1f} N·m/deg", Nm_per_deg(*c.yaw_Nmm_per_rad)) : "",
                        c.time_s));
   if (!c.stable)
     progress("  warning: the footprint's tangent is indefinite (an unstable state): its standing stiffness describes "
@@ -185,10 +182,8 @@ void measure_standing_stiffness(const TyreMesh& tm, const TyreDescription& tyre,
 void relaxation_lengths(RollingResult& r, const ProgressSink& progress) {
   if (!r.standing_stiffness) return;
   const StandingStiffness& c = *r.standing_stiffness;
-  if (r.slip_stiffness_N && c.longitudinal_N_per_mm > 0)
-    r.longitudinal_relaxation_length_mm = *r.slip_stiffness_N / c.longitudinal_N_per_mm;
-  if (r.cornering_stiffness_N_per_deg && c.lateral_N_per_mm && *c.lateral_N_per_mm > 0)
-    r.lateral_relaxation_length_mm = std::abs(*r.cornering_stiffness_N_per_deg) / kDegree / *c.lateral_N_per_mm;
+  r.longitudinal_relaxation_length_mm = relaxation_length_mm(r.slip_stiffness_N, c.longitudinal_N_per_mm);
+  r.lateral_relaxation_length_mm = relaxation_length_mm(per_radian(r.cornering_stiffness_N_per_deg), c.lateral_N_per_mm);
   if (progress && r.longitudinal_relaxation_length_mm)
     progress(fmt::format("  relaxation lengths: longitudinal {:.0f} mm (slip stiffness / Cx){}",
                          *r.longitudinal_relaxation_length_mm,
@@ -197,6 +192,9 @@ void relaxation_lengths(RollingResult& r, const ProgressSink& progress) {
                              : ""));
 }
 
+// dFy/dα and the pneumatic trail at α = 0 (κ and γ of the sweep): central differences over ±kProbeAngle,
+// two extra solves near the straight-ahead state, where the patch still sticks almost everywhere (the
+// sweep's own points lie in the nonlinear range). Not sweep points: not reported as such.
 constexpr double kProbeAngle = 0.2;  // degrees
 // `mirror`: the tyre is its own mirror image (SlipAngleSweep::mirror_negative_angles), so the probe at
 // −kProbeAngle is the mirror image of the one at +kProbeAngle, not solved.

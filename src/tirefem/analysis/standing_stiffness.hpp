@@ -13,6 +13,8 @@
 // transient tyre models (the Magic Formula's PTX*, PTY*) need. For a rigid carcass Cy is the tread's own
 // Σ (G/hp) w over the patch, and σα the mean distance of the contact area from the patch's leading edge
 // (a for a rectangular patch of length 2a).
+#include <cmath>
+#include <numbers>
 #include <optional>
 
 #include "tirefem/analysis/footprint.hpp"
@@ -33,6 +35,19 @@ struct StandingStiffness {
   double assembly_s = 0.0, analysis_s = 0.0, factorization_s = 0.0;  // of the tangent, its ordering, its factor
   double time_s = 0.0;
 };
+
+// σ = K/C, mm: a slip stiffness K (N per unit κ, or a cornering stiffness per radian) over a standing
+// stiffness C (N/mm); nothing without either or with C ≤ 0.
+inline std::optional<double> relaxation_length_mm(std::optional<double> slip_stiffness_N,
+                                                  std::optional<double> stiffness_N_per_mm) {
+  if (!slip_stiffness_N || !stiffness_N_per_mm || !(*stiffness_N_per_mm > 0)) return std::nullopt;
+  return std::abs(*slip_stiffness_N) / *stiffness_N_per_mm;
+}
+// A cornering stiffness per degree as per radian, and the yaw stiffness in N·m per degree, as reported.
+inline std::optional<double> per_radian(std::optional<double> per_degree) {
+  return per_degree ? std::optional(*per_degree * 180.0 / std::numbers::pi) : std::nullopt;
+}
+inline double Nm_per_deg(double Nmm_per_rad) { return Nmm_per_rad * 1e-3 * std::numbers::pi / 180.0; }
 
 // At the converged static state u (support moved up by `deflection`) of the inflated tyre; `points` the
 // tread points of that state (StaticContactResult::tread_points). Nothing when no point is in contact.

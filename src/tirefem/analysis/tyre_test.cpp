@@ -202,11 +202,9 @@ TyreTestResult assemble_tyre_test(const TyreTestStudy& study, double unloaded_ra
         if (!l.yaw_stiffness_Nmm_per_rad) l.yaw_stiffness_Nmm_per_rad = c->yaw_Nmm_per_rad;
       }
     }
-    if (l.slip_stiffness_N && l.longitudinal_stiffness_N_per_mm && *l.longitudinal_stiffness_N_per_mm > 0)
-      l.longitudinal_relaxation_length_mm = *l.slip_stiffness_N / *l.longitudinal_stiffness_N_per_mm;
-    if (l.cornering_stiffness_N_per_deg && l.lateral_stiffness_N_per_mm && *l.lateral_stiffness_N_per_mm > 0)
-      l.lateral_relaxation_length_mm =
-          std::abs(*l.cornering_stiffness_N_per_deg) / kRadiansPerDegree / *l.lateral_stiffness_N_per_mm;
+    l.longitudinal_relaxation_length_mm = relaxation_length_mm(l.slip_stiffness_N, l.longitudinal_stiffness_N_per_mm);
+    l.lateral_relaxation_length_mm =
+        relaxation_length_mm(per_radian(l.cornering_stiffness_N_per_deg), l.lateral_stiffness_N_per_mm);
     t.loads.push_back(l);
     const double re = l.effective_rolling_radius_mm.value_or(std::nan(""));
     for (const RollingResult* r : series) {

@@ -85,4 +85,14 @@ GroupPoints select_points(FitGroup group, std::span<const TyreTestPoint> points,
   return data;
 }
 
+double LogBounded::value(double v) const {
+  const double a = std::log(lo), b = std::log(hi);
+  return std::exp(a + 0.5 * (b - a) * (1.0 + std::tanh(v)));
+}
+
+double LogBounded::parameter(double x) const {
+  const double a = std::log(lo), b = std::log(hi);
+  return std::atanh(std::clamp(2.0 * (std::log(x) - a) / (b - a) - 1.0, -0.99, 0.99));
+}
+
 }  // namespace tirefem::magic_formula_fit

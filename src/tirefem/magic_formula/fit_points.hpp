@@ -1,6 +1,6 @@
 #pragma once
 // The points a coefficient group is fitted to, and what they contain (loads, camber sweeps, slip signs).
-// Internal to the fitter (fitter.cpp, fit_start_values.cpp).
+// Internal to the fits (fitter.cpp, fit_start_values.cpp, vertical_fit.cpp, relaxation_fit.cpp).
 #include <span>
 #include <utility>
 #include <vector>
@@ -32,5 +32,14 @@ GroupPoints select_points(FitGroup group, std::span<const TyreTestPoint> points,
 std::vector<double> distinct_values(std::vector<double> values, double tolerance);
 // Least-squares line y = a + b x, returned as {a, b} (b = 0 with a single distinct x).
 std::pair<double, double> fit_line(const std::vector<double>& x, const std::vector<double>& y);
+
+// A positive coefficient kept within [lo, hi] smoothly for Levenberg-Marquardt, which then varies v ∈ ℝ:
+// value(v) = exp(log lo + ½ (log hi − log lo)(1 + tanh v)); parameter() is its inverse, kept off the
+// saturated ends (|tanh v| ≤ 0.99).
+struct LogBounded {
+  double lo = 0, hi = 0;
+  double value(double v) const;
+  double parameter(double x) const;
+};
 
 }  // namespace tirefem::magic_formula_fit

@@ -18,16 +18,9 @@ namespace {
 // (with two or three loads and sigma_alpha nearly linear in Fz an unbounded PTY2 ran off to 800, the sine's
 // linear part, which the bound keeps to within 0.1% there).
 constexpr double kMaxExponent = 5.0, kMinPeak = 0.2, kMaxPeak = 20.0;
+constexpr magic_formula_fit::LogBounded kPeak{kMinPeak, kMaxPeak};
 double exponent_of(double v) { return kMaxExponent * std::tanh(v); }
 double v_of_exponent(double p) { return std::atanh(std::clamp(p / kMaxExponent, -0.99, 0.99)); }
-double peak_of(double v) {
-  const double lo = std::log(kMinPeak), hi = std::log(kMaxPeak);
-  return std::exp(lo + 0.5 * (hi - lo) * (1.0 + std::tanh(v)));
-}
-double v_of_peak(double peak) {
-  const double lo = std::log(kMinPeak), hi = std::log(kMaxPeak);
-  return std::atanh(std::clamp(2.0 * (std::log(peak) - lo) / (hi - lo) - 1.0, -0.99, 0.99));
-}
 
 // y_i = (a + b x_i) exp(-PTX3(v) x_i) (longitudinal: x = dfz) or y_i = a sin(2 atan(x_i / PTY2(v))) (lateral:
 // x = Fz/Fz0), u = (a, b, v) or (a, v).
@@ -43,7 +36,7 @@ struct LengthResidual {
   int inputs() const { return lateral ? 2 : 3; }
   int values() const { return static_cast<int>(x->size()); }
   static double model(const Eigen::VectorXd& u, double x, bool lateral) {
-    return lateral ? u[0] * std::sin(2 * std::atan(x / peak_of(u[1]))) : (u[0] + u[1] * x) * std::exp(-exponent_of(u[2]) * x);
+    return lateral ? u[0] * std::sin(2 * std::atan(x / kPeak.value(u[1]))) : (u[0] + u[1] * x) * std::exp(-exponent_of(u[2]) * x);
   }
   int operator()(const Eigen::VectorXd& u, Eigen::VectorXd& r) const {
     for (std::size_t i = 0; i < x->size(); ++i) r[static_cast<Eigen::Index>(i)] = model(u, (*x)[i], lateral) - (*y)[i];
@@ -168,9 +161,9 @@ std::vector<ChannelFitError> fit_relaxation_lengths(std::span<const RelaxationPo
         if (residual < best) best = residual, best_peak = peak;
       }
       Eigen::VectorXd u(2);
-      u << linear_fit(rho, ya, 1, basis(best_peak), residual)[0], v_of_peak(best_peak);
+      u << linear_fit(rho, ya, 1, basis(best_peak), residual)[0], kPeak.parameter(best_peak);
       minimise(LengthResidual{&rho, &ya, true}, u);
-      c.PTY1 = u[0], c.PTY2 = peak_of(u[1]);
+      c.PTY1 = u[0], c.PTY2 = kPeak.value(u[1]);
     }
     std::vector<double> data;
     for (const RelaxationPoint& p : points)

@@ -33,14 +33,7 @@ ChannelFitError channel_error(const char* channel, const std::vector<double>& re
 // unbounded fit then ran BREFF off to 1e10–1e12 (the example's quick rig), which is a step in Re at
 // Fz = 0 that no tyre has. Published passenger-tyre files have 7–10.
 constexpr double kMinBreff = 0.1, kMaxBreff = 100.0;
-double breff_of(double v) {  // the bounded parameter: v ∈ ℝ → [kMinBreff, kMaxBreff], smoothly
-  const double lo = std::log(kMinBreff), hi = std::log(kMaxBreff);
-  return std::exp(lo + 0.5 * (hi - lo) * (1.0 + std::tanh(v)));
-}
-double v_of_breff(double breff) {  // its inverse, kept off the saturated ends
-  const double lo = std::log(kMinBreff), hi = std::log(kMaxBreff);
-  return std::atanh(std::clamp(2.0 * (std::log(breff) - lo) / (hi - lo) - 1.0, -0.99, 0.99));
-}
+constexpr magic_formula_fit::LogBounded kBreff{kMinBreff, kMaxBreff};
 
 // (R0 - Re) Cz/FNOMIN = DREFF atan(BREFF rho) + FREFF rho, rho = Fz/FNOMIN.
 struct RadiusResidual {
@@ -55,7 +48,7 @@ struct RadiusResidual {
   int values() const { return static_cast<int>(rho->size()); }
   int operator()(const Eigen::VectorXd& u, Eigen::VectorXd& r) const {  // u = (v of BREFF, DREFF, FREFF)
     for (std::size_t i = 0; i < rho->size(); ++i)
-      r[static_cast<Eigen::Index>(i)] = u[1] * std::atan(breff_of(u[0]) * (*rho)[i]) + u[2] * (*rho)[i] - (*y)[i];
+      r[static_cast<Eigen::Index>(i)] = u[1] * std::atan(kBreff.value(u[0]) * (*rho)[i]) + u[2] * (*rho)[i] - (*y)[i];
     return 0;
   }
 };
@@ -143,9 +136,9 @@ ChannelFitError fit_effective_rolling_radius(std::span<const RollingRadiusPoint>
     lm.parameters.ftol = lm.parameters.xtol = 1e-15;
     lm.parameters.maxfev = 2000;
     Eigen::VectorXd u(3);
-    u << v_of_breff(best_B), DF[0], DF[1];
+    u << kBreff.parameter(best_B), DF[0], DF[1];
     lm.minimize(u);
-    c.BREFF = breff_of(u[0]);
+    c.BREFF = kBreff.value(u[0]);
     c.DREFF = u[1];
     c.FREFF = u[2];
   }

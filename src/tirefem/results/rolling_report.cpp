@@ -67,7 +67,7 @@ double status_code(TreadContact c) {
 }
 
 std::string standing_comment(const RollingResult& r) {
-  if (!r.standing_stiffness) return "standing stiffness: measured on a plane only";
+  if (!r.standing_stiffness) return "standing stiffness: not measured (a flat-plate test: on a plane only)";
   const StandingStiffness& c = *r.standing_stiffness;
   return fmt::format("standing tyre, tread glued to the plane: longitudinal stiffness Cx = {:g} N/mm{}; relaxation "
                      "length Kxkappa/Cx = {}{}",
@@ -288,7 +288,7 @@ toml::table rolling_summary(const RollingResult& r) {
     toml::table st;
     st.insert("longitudinal_N_per_mm", c.longitudinal_N_per_mm);
     if (c.lateral_N_per_mm) st.insert("lateral_N_per_mm", *c.lateral_N_per_mm);
-    if (c.yaw_Nmm_per_rad) st.insert("yaw_Nm_per_deg", *c.yaw_Nmm_per_rad * 1e-3 / kDeg);
+    if (c.yaw_Nmm_per_rad) st.insert("yaw_Nm_per_deg", Nm_per_deg(*c.yaw_Nmm_per_rad));
     st.insert("tread_shear_N_per_mm", c.tread_shear_N_per_mm);
     st.insert("stable", c.stable);
     st.insert("factorizations", c.factorizations);

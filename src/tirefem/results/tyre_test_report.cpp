@@ -130,12 +130,12 @@ CsvTable tyre_test_loads_table(const TyreTestResult& t) {
                    "patch_length_mm", "patch_width_mm", "slip_stiffness_N", "cornering_stiffness_N_per_deg",
                    "pneumatic_trail_mm", "longitudinal_stiffness_N_per_mm", "lateral_stiffness_N_per_mm",
                    "yaw_stiffness_Nm_per_deg", "longitudinal_relaxation_length_mm", "lateral_relaxation_length_mm"};
-  const auto v = [](const std::optional<double>& x, double scale = 1.0) { return x ? *x * scale : kNaN; };
+  const auto v = [](const std::optional<double>& x) { return x ? *x : kNaN; };
   for (const TyreTestLoad& l : t.loads)
     table.rows.push_back({l.target_load_N, l.Fz_N, l.deflection_mm, l.loaded_radius_mm, v(l.effective_rolling_radius_mm),
                           l.patch_length_mm, l.patch_width_mm, v(l.slip_stiffness_N), v(l.cornering_stiffness_N_per_deg),
                           v(l.pneumatic_trail_mm), v(l.longitudinal_stiffness_N_per_mm), v(l.lateral_stiffness_N_per_mm),
-                          v(l.yaw_stiffness_Nmm_per_rad, 1e-3 * std::numbers::pi / 180), v(l.longitudinal_relaxation_length_mm),
+                          l.yaw_stiffness_Nmm_per_rad ? Nm_per_deg(*l.yaw_stiffness_Nmm_per_rad) : kNaN, v(l.longitudinal_relaxation_length_mm),
                           v(l.lateral_relaxation_length_mm)});
   return table;
 }
@@ -233,7 +233,7 @@ toml::table tyre_test_summary(const TyreTestResult& t, const TyreTestFit* fit) {
     if (l.pneumatic_trail_mm) e.insert("pneumatic_trail_mm", *l.pneumatic_trail_mm);
     if (l.longitudinal_stiffness_N_per_mm) e.insert("longitudinal_stiffness_N_per_mm", *l.longitudinal_stiffness_N_per_mm);
     if (l.lateral_stiffness_N_per_mm) e.insert("lateral_stiffness_N_per_mm", *l.lateral_stiffness_N_per_mm);
-    if (l.yaw_stiffness_Nmm_per_rad) e.insert("yaw_stiffness_Nm_per_deg", *l.yaw_stiffness_Nmm_per_rad * 1e-3 * std::numbers::pi / 180);
+    if (l.yaw_stiffness_Nmm_per_rad) e.insert("yaw_stiffness_Nm_per_deg", Nm_per_deg(*l.yaw_stiffness_Nmm_per_rad));
     if (l.longitudinal_relaxation_length_mm)
       e.insert("longitudinal_relaxation_length_mm", *l.longitudinal_relaxation_length_mm);
     if (l.lateral_relaxation_length_mm) e.insert("lateral_relaxation_length_mm", *l.lateral_relaxation_length_mm);
