@@ -176,8 +176,9 @@ TEST(CorneringBrush, StandingStiffnessIsTheTreadsAndTheRelaxationLengthTheMeanDi
   // patch; and σα = Kyα/Cy (Kyα from the α = 0.1° state, all stick) is the brush's mean distance of the
   // contact area from the leading edge (a for a rectangle of length 2a). Tolerances: 2% for Cx and Cy, as
   // for Fy above (the structure ×1000 leaves a carcass compliance in series with the tread, whose share
-  // is Ct/Cc: observed −0.27% and −1.23%, the lateral one larger as the sidewalls bend); 2% for σα,
-  // where that compliance lowers Kyα and Cy alike (observed +0.78%).
+  // is Ct/Cc: observed −0.27% and −1.23%, the lateral one larger as the sidewalls bend; with the structure
+  // ×10 000 a tenth of that, −0.027% and −0.124%, checked: 8–12 times less, below 0.2%); 2% for σα, where
+  // that compliance lowers Kyα and Cy alike (observed +0.78%).
   const RollingResult& r = run();
   ASSERT_TRUE(r.standing_stiffness.has_value());
   const StandingStiffness& c = *r.standing_stiffness;
@@ -191,6 +192,39 @@ TEST(CorneringBrush, StandingStiffnessIsTheTreadsAndTheRelaxationLengthTheMeanDi
               *c.lateral_N_per_mm, c.tread_shear_N_per_mm, 100 * (c.longitudinal_N_per_mm / c.tread_shear_N_per_mm - 1),
               100 * (*c.lateral_N_per_mm / c.tread_shear_N_per_mm - 1), sigma, b.mean_distance,
               100 * (sigma / b.mean_distance - 1));
+  // The deficit is the carcass's, in series: ten times stiffer again, it is ten times less.
+  const auto deficit = [](double stiffness, double tread) { return 1.0 - stiffness / tread; };
+  {
+    const TyreDescription stiffer = stiffened_tyre(10 * kStiffening);
+    const TyreMesh tm = build_tyre_mesh(stiffer, coarse_mesh(60, 12, false));
+    ContactSettings cs = test_contact_settings(ContactSettings::Iteration::single_loop);
+    cs.quadrature = 8;
+    cs.residual_tolerance = 1e-8;
+    FootprintStudy fs;
+    fs.name = "stiffer";
+    fs.target_load = kLoad;
+    const StaticContactResult fp = run_footprint(tm, stiffer, example_case().inflation, cs, fs);
+    ASSERT_TRUE(fp.completed) << fp.failure;
+    const RoadPlane plane;
+    const auto c10 = standing_stiffness(tm, stiffer, example_case().inflation.pressure, plane,
+                                        fp.final_state.deflection_mm, fp.tread_points, fp.final_state.displacement);
+    ASSERT_TRUE(c10 && c10->lateral_N_per_mm);
+    std::printf("  x%.0f: Cx %.3f, Cy %.3f N/mm against the tread's %.3f (%+.3f%%, %+.3f%%)\n", 10 * kStiffening,
+                c10->longitudinal_N_per_mm, *c10->lateral_N_per_mm, c10->tread_shear_N_per_mm,
+                100 * (c10->longitudinal_N_per_mm / c10->tread_shear_N_per_mm - 1),
+                100 * (*c10->lateral_N_per_mm / c10->tread_shear_N_per_mm - 1));
+    const double dx = deficit(c.longitudinal_N_per_mm, c.tread_shear_N_per_mm),
+                 dy = deficit(*c.lateral_N_per_mm, c.tread_shear_N_per_mm),
+                 dx10 = deficit(c10->longitudinal_N_per_mm, c10->tread_shear_N_per_mm),
+                 dy10 = deficit(*c10->lateral_N_per_mm, c10->tread_shear_N_per_mm);
+    EXPECT_GT(dx10, 0.0);
+    EXPECT_GT(dy10, 0.0);
+    for (double ratio : {dx / dx10, dy / dy10}) {
+      EXPECT_GT(ratio, 8.0);
+      EXPECT_LT(ratio, 12.0);
+    }
+    EXPECT_LT(dy10, 0.002);
+  }
   EXPECT_NEAR(c.longitudinal_N_per_mm, c.tread_shear_N_per_mm, 0.02 * c.tread_shear_N_per_mm);
   EXPECT_NEAR(*c.lateral_N_per_mm, c.tread_shear_N_per_mm, 0.02 * c.tread_shear_N_per_mm);
   EXPECT_LT(*c.lateral_N_per_mm, c.tread_shear_N_per_mm);  // in series with the carcass: never above the tread's
