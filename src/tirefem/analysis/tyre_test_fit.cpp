@@ -66,7 +66,8 @@ TyreTestFit fit_tyre_test(const TyreTestResult& t, const TyreDescription& tyre, 
       "steady-state PAC2002 coefficients fitted to finite-element rolling states (no dynamics, no speed effects)",
       "relaxation lengths PTX*, PTY*: slip (cornering) stiffness over the standing tyre's longitudinal (lateral) "
       "stiffness, tread glued to the plane",
-      "coefficients marked 'not determined' hold their neutral values: the test did not excite them"};
+      "coefficients marked 'not determined' hold their neutral values (or, where 0 is singular, an assumed one): "
+      "the test did not excite them"};
   // The standing tyre's stiffness at the load nearest FNOMIN: MF 6.1 keeps it in [STRUCTURAL], which PAC2002
   // has not; a comment, for the user of a transient or MF 6.1 model.
   const TyreTestLoad* nominal = nullptr;
@@ -80,7 +81,13 @@ TyreTestFit fit_tyre_test(const TyreTestResult& t, const TyreDescription& tyre, 
         "LATERAL_STIFFNESS {:.0f} N/m, YAW_STIFFNESS {:.0f} N m/rad (MF 6.1 [STRUCTURAL] keys)",
         nominal->Fz_N, nominal->longitudinal_stiffness_N_per_mm.value_or(0.0) * 1e3, *nominal->lateral_stiffness_N_per_mm * 1e3,
         nominal->yaw_stiffness_Nmm_per_rad.value_or(0.0) * 1e-3));
-  for (const std::string& key : fit.not_determined) f.notes[key] = "not determined by the test: neutral value";
+  // PKY2 and PTY2 divide Fz: their neutral value 0 would be singular, so they hold an assumed one.
+  for (const std::string& key : fit.not_determined) {
+    const CoefficientInfo* info = find_coefficient(key);
+    f.notes[key] = !info || c.*(info->member) == info->neutral
+                       ? "not determined by the test: neutral value"
+                       : "not determined by the test: an assumed value, its neutral value 0 being singular";
+  }
   f.notes["WIDTH"] = "twice the carcass line's largest x";
   f.notes["RIM_RADIUS"] = "bead point of the carcass line";
   f.notes["RIM_WIDTH"] = "twice the bead point's x";

@@ -35,6 +35,33 @@ std::vector<double> distinct_values(std::vector<double> values, double tolerance
   return out;
 }
 
+std::vector<double> load_levels(std::vector<double> loads) {
+  std::sort(loads.begin(), loads.end());
+  std::vector<double> levels;
+  if (loads.empty()) return levels;
+  const double gap = kLoadLevelGap * std::abs(loads.back());
+  double sum = 0;
+  int count = 0;
+  for (std::size_t i = 0; i < loads.size(); ++i) {
+    if (i > 0 && loads[i] - loads[i - 1] > gap) {
+      levels.push_back(sum / count);
+      sum = 0;
+      count = 0;
+    }
+    sum += loads[i];
+    ++count;
+  }
+  levels.push_back(sum / count);
+  return levels;
+}
+
+std::size_t nearest_level(double Fz, const std::vector<double>& levels) {
+  std::size_t best = 0;
+  for (std::size_t k = 1; k < levels.size(); ++k)
+    if (std::abs(Fz - levels[k]) < std::abs(Fz - levels[best])) best = k;
+  return best;
+}
+
 std::pair<double, double> fit_line(const std::vector<double>& x, const std::vector<double>& y) {
   const double n = static_cast<double>(x.size());
   const double mx = std::accumulate(x.begin(), x.end(), 0.0) / n;
@@ -71,8 +98,7 @@ GroupPoints select_points(FitGroup group, std::span<const TyreTestPoint> points,
     positive = positive || s > 0;
     data.peak = std::max(data.peak, std::abs(measured(group, p)));
   }
-  const double max_load = loads.empty() ? 0.0 : *std::max_element(loads.begin(), loads.end());
-  data.loads = distinct_values(loads, 1e-3 * max_load);
+  data.loads = load_levels(loads);
   bool negative_camber = false, positive_camber = false;
   for (const auto& [gamma, counts] : signs_per_camber) {
     if (counts.first < 2 || counts.second < 2) continue;  // a sweep has at least 2 slips of each sign

@@ -11,7 +11,7 @@ namespace tirefem::magic_formula_fit {
 
 struct GroupPoints {
   std::vector<TyreTestPoint> points;
-  std::vector<double> loads;        // distinct loads
+  std::vector<double> loads;        // load levels (load_levels), ascending
   int camber_sweeps = 0;            // distinct inclinations with a slip sweep of both signs (0 counts)
   bool camber_both_signs = false;   // sweeps at a positive and at a negative inclination
   bool both_signs = false;          // slips of both signs
@@ -30,6 +30,15 @@ GroupPoints select_points(FitGroup group, std::span<const TyreTestPoint> points,
 
 // Distinct values: neighbours in sorted order further apart than `tolerance`.
 std::vector<double> distinct_values(std::vector<double> values, double tolerance);
+// The load levels of a test: a rig holds each load only to its tolerance (tirefem's Qz to about 0.1–0.2%,
+// a flat-track machine to a few per cent), so loads whose sorted neighbours lie within kLoadLevelGap of the
+// largest load form one level, reported as their mean (ascending). Load-dependence coefficients need
+// levels, not the scatter within one: counted as distinct values to 1e-3 of the load, one 5550 N series
+// held to ±6 N made three "loads" and its fit of PKX2, PEX2, PEX3 went astray (PEX1 −7e92).
+constexpr double kLoadLevelGap = 0.05;
+std::vector<double> load_levels(std::vector<double> loads);
+// The index in `levels` (load_levels) of the level nearest Fz.
+std::size_t nearest_level(double Fz, const std::vector<double>& levels);
 // Least-squares line y = a + b x, returned as {a, b} (b = 0 with a single distinct x).
 std::pair<double, double> fit_line(const std::vector<double>& x, const std::vector<double>& y);
 

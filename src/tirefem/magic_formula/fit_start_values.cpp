@@ -17,12 +17,14 @@ struct LoadLevelFeatures {
   double residual_moment = 0; // Mz where Fy = 0
 };
 
-// Features of one load's gamma = 0 points; the force channel is Fx for the longitudinal group, Fy else.
-LoadLevelFeatures load_level_features(FitGroup group, const GroupPoints& data, double load, double Fz0) {
+// Features of one load level's gamma = 0 points (data.loads[k]); the force channel is Fx for the
+// longitudinal group, Fy else.
+LoadLevelFeatures load_level_features(FitGroup group, const GroupPoints& data, std::size_t k, double Fz0) {
   const FitGroup force = group == FitGroup::aligning ? FitGroup::pure_lateral : group;
+  const double load = data.loads[k];
   std::vector<const TyreTestPoint*> level;
   for (const TyreTestPoint& p : data.points)
-    if (std::abs(p.Fz - load) <= 1e-3 * load && p.gamma == 0) level.push_back(&p);
+    if (nearest_level(p.Fz, data.loads) == k && p.gamma == 0) level.push_back(&p);
   std::sort(level.begin(), level.end(),
             [&](auto* a, auto* b) { return std::abs(slip(group, *a)) < std::abs(slip(group, *b)); });
   LoadLevelFeatures f;
@@ -89,7 +91,7 @@ double cornering_stiffness_peak_load(const LoadLevelFeatures& low, const LoadLev
 void set_start_values(FitGroup group, const GroupPoints& data, MagicFormulaCoefficients& c) {
   const double Fz0 = c.FNOMIN * c.LFZO;
   std::vector<LoadLevelFeatures> levels;
-  for (double load : data.loads) levels.push_back(load_level_features(group, data, load, Fz0));
+  for (std::size_t k = 0; k < data.loads.size(); ++k) levels.push_back(load_level_features(group, data, k, Fz0));
   std::vector<double> dfz, mu, stiffness, shift, trail, residual;
   for (const auto& l : levels) {
     dfz.push_back(l.dfz);

@@ -111,7 +111,7 @@ std::vector<ChannelFitError> fit_relaxation_lengths(std::span<const RelaxationPo
   };
 
   // Longitudinal.
-  const std::size_t nk = magic_formula_fit::distinct_values(loads_k, 1e-3 * Fz0).size();
+  const std::size_t nk = magic_formula_fit::load_levels(loads_k).size();
   if (nk == 0) not_determined.insert(not_determined.end(), {"PTX1", "PTX2", "PTX3"});
   if (nk >= 1) {
     const auto basis = [&](double p) { return [p](int k, double x) { return (k == 0 ? 1.0 : x) * std::exp(-p * x); }; };
@@ -142,7 +142,7 @@ std::vector<ChannelFitError> fit_relaxation_lengths(std::span<const RelaxationPo
   }
 
   // Lateral.
-  const std::size_t na = magic_formula_fit::distinct_values(loads_a, 1e-3 * Fz0).size();
+  const std::size_t na = magic_formula_fit::load_levels(loads_a).size();
   if (na == 0) not_determined.insert(not_determined.end(), {"PTY1", "PTY2"});
   if (na >= 1) {
     const auto basis = [](double peak_load) {

@@ -99,7 +99,7 @@ ChannelFitError fit_effective_rolling_radius(std::span<const RollingRadiusPoint>
     y.push_back((R0 - p.effective_radius) * Cz / Fz0);
     loads.push_back(p.Fz);
   }
-  const std::size_t distinct = magic_formula_fit::distinct_values(loads, 1e-3 * Fz0).size();
+  const std::size_t distinct = magic_formula_fit::load_levels(loads).size();
   if (distinct == 0) throw std::invalid_argument("Magic Formula rolling radius fit: no points");
   c.BREFF = c.DREFF = c.FREFF = 0;
   if (distinct < 3) {
