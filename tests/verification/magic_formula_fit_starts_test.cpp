@@ -1,7 +1,8 @@
 // The fit of a Coulomb tread's rig table does not depend on round-off in the table: two runs of the example
 // tyre's rig whose forces differ by at most 0.09% give the same coefficients. With one start, the lateral
 // group of the second run found another minimum of the least-squares function (PKY1 -26.9 against -24.0,
-// PDY1 0.67 against 0.85, Fy RMS 1.02% against 0.57% of the peak).
+// PDY1 0.67 against 0.85, Fy RMS 1.02% against 0.57% of the peak). Since the fit groups the loads into
+// levels (fit_points.hpp: load_levels) both runs give PKY1 −15.5 with PKY2 2.0, Fy RMS 0.37%.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "tirefem/magic_formula/evaluator.hpp"
 #include "tirefem/magic_formula/fitter.hpp"
 
 namespace tirefem {
@@ -68,6 +70,27 @@ TEST(MagicFormulaFitStarts, TwoRunsOfTheRigGiveTheSameCoefficients) {
     std::printf("%s %.6g %.6g\n", name, p, q);
     EXPECT_LE(std::abs(p - q), 0.01 * std::abs(p)) << name;
   }
+}
+
+// The number a vehicle model takes most from the file, the cornering stiffness, is the FE tyre's: at FNOMIN
+// the fitted curve's secant at the rig's smallest slip angle equals the table's within 2%. (With the load
+// levels split by the rig's ±0.2% load scatter the start values were spoiled and PKY2 ran to its bound 4:
+// 731 against 813 N/deg.)
+TEST(MagicFormulaFitStarts, TheFittedCorneringStiffnessIsTheTables) {
+  const auto points = rig_run(1);
+  const MagicFormulaFit fit = fit_run(1);
+  const TyreTestPoint* smallest = nullptr;
+  for (const TyreTestPoint& p : points)
+    if (p.kappa == 0 && p.gamma == 0 && p.alpha > 0 && std::abs(p.Fz - 3700) < 0.01 * 3700 &&
+        (!smallest || p.alpha < smallest->alpha))
+      smallest = &p;
+  ASSERT_NE(smallest, nullptr);
+  const auto f = evaluate_magic_formula(fit.coefficients, {smallest->Fz, 0.0, smallest->alpha, 0.0}, SlipCombination::pure);
+  const double table = smallest->Fy / smallest->alpha, fitted = f.Fy / smallest->alpha;
+  std::printf("cornering stiffness at %.0f N, alpha %.3f deg: table %.1f, fit %.1f N/deg\n", smallest->Fz,
+              smallest->alpha * 180 / M_PI, table * M_PI / 180, fitted * M_PI / 180);
+  EXPECT_LT(table, 0.0);  // W axes: alpha > 0 gives Fy < 0
+  EXPECT_NEAR(fitted, table, 0.02 * std::abs(table));
 }
 
 }  // namespace
