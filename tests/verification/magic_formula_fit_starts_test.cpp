@@ -5,6 +5,7 @@
 // levels (fit_points.hpp: load_levels) both runs give PKY1 −15.5 with PKY2 2.0, Fy RMS 0.37%.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -91,6 +92,55 @@ TEST(MagicFormulaFitStarts, TheFittedCorneringStiffnessIsTheTables) {
               smallest->alpha * 180 / M_PI, table * M_PI / 180, fitted * M_PI / 180);
   EXPECT_LT(table, 0.0);  // W axes: alpha > 0 gives Fy < 0
   EXPECT_NEAR(fitted, table, 0.02 * std::abs(table));
+}
+
+// Sweeps of one sign (κ ≥ 0, α ≥ 0) do not determine the curves' shifts, which then trade against each
+// other and the slope: they are flagged and kept at 0, and the file's curves stay the FE tyre's mirror
+// image on the side the test did not run (this tyre is its own mirror image: Fy(−α) = −Fy(α)). Before,
+// fitted from one side, its example's quick rig gave Fy(−6°) = +774 N against −1183 N at +6°.
+TEST(MagicFormulaFitStarts, OneSidedSweepsLeaveTheShiftsOut) {
+  const auto all = rig_run(1);
+  std::vector<TyreTestPoint> positive;
+  for (const TyreTestPoint& p : all)
+    if (p.kappa >= 0 && p.alpha >= 0) positive.push_back(p);
+  MagicFormulaCoefficients start;
+  start.FNOMIN = 3700;
+  start.UNLOADED_RADIUS = 0.285;
+  const MagicFormulaFit fit = fit_magic_formula(positive, start);
+  const std::vector<std::vector<const char*>> shifts{
+      {"PHX1", "PHX2", "PVX1", "PVX2"}, {"PHY1", "PHY2", "PVY1", "PVY2"}, {"QHZ1", "QHZ2"}};
+  for (std::size_t g = 0; g < 3; ++g)
+    for (const char* key : shifts[g])
+      EXPECT_NE(std::find(fit.groups[g].not_determined.begin(), fit.groups[g].not_determined.end(), key),
+                fit.groups[g].not_determined.end())
+          << key;
+  const MagicFormulaCoefficients& c = fit.coefficients;
+  for (double v : {c.PHX1, c.PHX2, c.PVX1, c.PVX2, c.PHY1, c.PHY2, c.PVY1, c.PVY2, c.QHZ1, c.QHZ2}) EXPECT_EQ(v, 0.0);
+  // Fy and Mz against the whole table, the negative slip angles included (the tyre's mirror image); Fx, whose
+  // braking side is not the driving side's mirror image (5550 N: −3786 N at κ −0.15, +3604 N at +0.15),
+  // against the driving side it was fitted to. Within the 3% of the peak the issue asks of the fit for Fx
+  // and Fy, 10% for Mz.
+  double peak[3] = {0, 0, 0}, squares[3] = {0, 0, 0};
+  int n[3] = {0, 0, 0};
+  for (const TyreTestPoint& p : all) {
+    if (p.gamma != 0 || (p.kappa != 0 && p.alpha != 0)) continue;
+    const auto f = evaluate_magic_formula(c, {p.Fz, p.kappa, p.alpha, 0.0}, SlipCombination::pure);
+    const double fitted[3] = {f.Fx, f.Fy, f.Mz}, table[3] = {p.Fx, p.Fy, p.Mz};
+    const bool used[3] = {p.alpha == 0 && p.kappa >= 0, p.kappa == 0, p.kappa == 0};
+    for (int k = 0; k < 3; ++k) {
+      if (!used[k]) continue;
+      peak[k] = std::max(peak[k], std::abs(table[k]));
+      squares[k] += (fitted[k] - table[k]) * (fitted[k] - table[k]);
+      ++n[k];
+    }
+  }
+  const double bound[3] = {0.03, 0.03, 0.10};
+  for (int k = 0; k < 3; ++k) {
+    const double rms = std::sqrt(squares[k] / n[k]) / peak[k];
+    std::printf("%s: fitted to one side, RMS %.2f%% of the peak against %d points\n",
+                k == 0 ? "Fx" : (k == 1 ? "Fy" : "Mz"), 100 * rms, n[k]);
+    EXPECT_LE(rms, bound[k]) << k;
+  }
 }
 
 }  // namespace
