@@ -76,7 +76,6 @@ std::pair<double, double> fit_line(const std::vector<double>& x, const std::vect
 }
 
 GroupPoints select_points(FitGroup group, std::span<const TyreTestPoint> points, bool with_camber) {
-  constexpr double pure_tolerance = 1e-12;
   constexpr double camber_tolerance = 1e-6;  // rad
   GroupPoints data;
   std::vector<double> loads;
@@ -85,7 +84,7 @@ GroupPoints select_points(FitGroup group, std::span<const TyreTestPoint> points,
   bool negative = false, positive = false;
   for (const TyreTestPoint& p : points) {
     const double other_slip = group == FitGroup::pure_longitudinal ? p.alpha : p.kappa;
-    if (std::abs(other_slip) > pure_tolerance) continue;
+    if (std::abs(other_slip) > kPureSlipTolerance) continue;
     const bool cambered = std::abs(p.gamma) > camber_tolerance;
     if (cambered && (group == FitGroup::pure_longitudinal || !with_camber)) continue;
     data.points.push_back(p);
@@ -99,6 +98,10 @@ GroupPoints select_points(FitGroup group, std::span<const TyreTestPoint> points,
     data.peak = std::max(data.peak, std::abs(measured(group, p)));
   }
   data.loads = load_levels(loads);
+  std::vector<char> cambered_level(data.loads.size(), 0);
+  for (const TyreTestPoint& p : data.points)
+    if (std::abs(p.gamma) > camber_tolerance) cambered_level[nearest_level(p.Fz, data.loads)] = 1;
+  data.camber_point_levels = static_cast<int>(std::count(cambered_level.begin(), cambered_level.end(), 1));
   bool negative_camber = false, positive_camber = false;
   for (const auto& [gamma, counts] : signs_per_camber) {
     if (counts.first < 2 || counts.second < 2) continue;  // a sweep has at least 2 slips of each sign

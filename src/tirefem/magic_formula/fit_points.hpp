@@ -13,6 +13,7 @@ struct GroupPoints {
   std::vector<TyreTestPoint> points;
   std::vector<double> loads;        // load levels (load_levels), ascending
   int camber_sweeps = 0;            // distinct inclinations with a slip sweep of both signs (0 counts)
+  int camber_point_levels = 0;      // load levels with cambered points (a free-rolling one suffices)
   bool camber_both_signs = false;   // sweeps at a positive and at a negative inclination
   bool both_signs = false;          // slips of both signs
   double peak = 0;                  // max |measured|
@@ -24,8 +25,12 @@ double slip(FitGroup group, const TyreTestPoint& p);
 // The pure-slip model value of the group's channel.
 double model(FitGroup group, const MagicFormulaCoefficients& c, const TyreTestPoint& p);
 
+// The other slip of a pure-slip point: |kappa| (or |alpha| in rad) within this. A free-rolling point at a
+// camber has a small kappa of its own (the rig's at 2°: 8.9e-5, its Fx 0.009 N): it is a lateral point.
+constexpr double kPureSlipTolerance = 1e-3;
+
 // Pure-slip points of the group: longitudinal alpha = 0 and gamma = 0; lateral and aligning kappa = 0, and
-// gamma = 0 unless `with_camber`.
+// gamma = 0 unless `with_camber` (zero within kPureSlipTolerance).
 GroupPoints select_points(FitGroup group, std::span<const TyreTestPoint> points, bool with_camber);
 
 // Distinct values: neighbours in sorted order further apart than `tolerance`.

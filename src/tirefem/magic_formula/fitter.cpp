@@ -45,6 +45,9 @@ struct FittedCoefficient {
   bool nominal = false;            // fitted in the first pass
   bool never = false;              // never fitted (see fitter.hpp)
   bool camber_both_signs = false;  // sweeps at a positive and a negative inclination needed (|gamma| beside gamma)
+  // Cambered points at `loads` load levels suffice, free rolling ones too (no sweep needed): the shift of
+  // the curve with camber, PVY3-4 (camber thrust at alpha = 0) and QDZ8-9 (the residual moment's).
+  bool camber_points = false;
 };
 
 #define COEF(name, ...) FittedCoefficient{#name, &M::name, __VA_ARGS__}
@@ -65,13 +68,15 @@ const std::vector<FittedCoefficient>& group_coefficients(FitGroup group) {
       COEF(PEY4, F, 1, 2, true),
       COEF(PKY1, F, 1, 1, false, true), COEF(PKY2, Bound::peak_load, 2), COEF(PKY3, F, 1, 2),
       COEF(PHY1, F, 1, 1, true), COEF(PHY2, F, 2, 1, true), COEF(PHY3, F, 1, 2),
-      COEF(PVY1, F, 1, 1, true), COEF(PVY2, F, 2, 1, true), COEF(PVY3, F, 1, 2), COEF(PVY4, F, 2, 2)};
+      COEF(PVY1, F, 1, 1, true), COEF(PVY2, F, 2, 1, true), COEF(PVY3, F, 1, 1, false, false, false, false, true),
+      COEF(PVY4, F, 2, 1, false, false, false, false, true)};
   static const std::vector<FittedCoefficient> aligning{
       COEF(QBZ1, F, 1, 1, false, true), COEF(QBZ2, F, 2), COEF(QBZ3, F, 3), COEF(QBZ4, F, 1, 2),
       COEF(QBZ5, F, 1, 2, false, false, false, true), COEF(QBZ9, F, 1), COEF(QBZ10, F, 1, 1, false, false, true),
       COEF(QCZ1, Bound::positive, 1, 1, false, true),
       COEF(QDZ1, F, 1, 1, false, true), COEF(QDZ2, F, 2), COEF(QDZ3, F, 1, 2), COEF(QDZ4, F, 1, 3),
-      COEF(QDZ6, F, 1), COEF(QDZ7, F, 2), COEF(QDZ8, F, 1, 2), COEF(QDZ9, F, 2, 2),
+      COEF(QDZ6, F, 1), COEF(QDZ7, F, 2), COEF(QDZ8, F, 1, 1, false, false, false, false, true),
+      COEF(QDZ9, F, 2, 1, false, false, false, false, true),
       COEF(QEZ1, Bound::at_most_one, 1, 1, false, true), COEF(QEZ2, F, 2), COEF(QEZ3, F, 3),
       COEF(QEZ4, F, 1, 1, true), COEF(QEZ5, F, 1, 2, true),
       COEF(QHZ1, F, 1, 1, true), COEF(QHZ2, F, 2, 1, true), COEF(QHZ3, F, 1, 2), COEF(QHZ4, F, 2, 2)};
@@ -84,7 +89,7 @@ const std::vector<FittedCoefficient>& group_coefficients(FitGroup group) {
 }
 #undef COEF
 
-bool is_camber_term(const FittedCoefficient& f) { return f.cambers > 1; }
+bool is_camber_term(const FittedCoefficient& f) { return f.cambers > 1 || f.camber_points; }
 
 // The curvature factor E = (E1 + E2 dfz + E3 dfz^2)(1 - (E4 + E5 gamma) sgn(slip)) (4.E14, 4.E24) is a
 // product of coefficients: with PEY1 = 0.004 and PEY3 = 41.5 the factors are badly scaled and their valley
@@ -316,8 +321,9 @@ GroupFitResult fit_coefficient_group(FitGroup group, std::span<const TyreTestPoi
   for (const FittedCoefficient& f : group_coefficients(group)) {
     const GroupPoints& data = is_camber_term(f) ? all : pure;
     const bool ok = !f.never && static_cast<int>(data.loads.size()) >= f.loads &&
-                    (!is_camber_term(f) || all.camber_sweeps >= f.cambers) && (!f.both_signs || data.both_signs) &&
-                    (!f.camber_both_signs || all.camber_both_signs);
+                    (!is_camber_term(f) || f.camber_points || all.camber_sweeps >= f.cambers) && (!f.both_signs || data.both_signs) &&
+                    (!f.camber_both_signs || all.camber_both_signs) &&
+                    (!f.camber_points || all.camber_point_levels >= f.loads);
     (ok ? result.fitted : result.not_determined).emplace_back(f.key);
     c.*(f.member) = 0;  // neutral value (every coefficient of the three groups is 0 when neutral)
     if (!ok) continue;

@@ -16,7 +16,9 @@
 // A coefficient is fitted only when the data determine it: load variations need 2 (linear) or 3
 // (quadratic, exponential) distinct loads; camber terms slip sweeps (>= 2 slips of each sign) at 2 distinct
 // inclinations (gamma = 0 counts), QDZ4 (gamma^2 beside QDZ3 gamma) at 3, QBZ5 (|gamma| beside QBZ4 gamma)
-// at a positive and a negative one; a free-rolling cambered point alone determines none. The
+// at a positive and a negative one; the camber shifts PVY3 (camber thrust) and QDZ8 (the residual moment's
+// camber term), with cambered points at 2 load levels PVY4 and QDZ9, need cambered points only, free-rolling
+// ones suffice (PHY3 and QHZ3, which such points cannot tell from them, then stay neutral). The
 // sign-dependent terms (PEX4, PEY3, PEY4, QEZ4, QEZ5) need slips of both signs. QBZ10 is never fitted: it
 // multiplies By Cy, nearly proportional to QBZ9 over a rig's loads. A coefficient not fitted is set to
 // its neutral value and listed in `not_determined`.

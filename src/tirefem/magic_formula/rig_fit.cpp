@@ -8,11 +8,10 @@
 #include <Eigen/Dense>
 
 #include "tirefem/magic_formula/evaluator.hpp"
+#include "tirefem/magic_formula/fit_points.hpp"
 
 namespace tirefem {
 namespace {
-
-constexpr double pure_tolerance = 1e-12;
 
 // Mx = R0 Fz (QSX1 - QSX2 gamma + QSX3 Fy/Fz0') (4.E69) with the model's pure-slip Fy: linear least squares.
 ChannelFitError fit_overturning_moment(const std::vector<RigPoint>& points, MagicFormulaCoefficients& c,
@@ -20,7 +19,7 @@ ChannelFitError fit_overturning_moment(const std::vector<RigPoint>& points, Magi
   std::vector<const RigPoint*> used;
   bool cambered = false, cornering = false;
   for (const RigPoint& p : points)
-    if (std::abs(p.KAPPA) <= pure_tolerance) {
+    if (std::abs(p.KAPPA) <= magic_formula_fit::kPureSlipTolerance) {
       used.push_back(&p);
       cambered = cambered || p.GAMMA != 0;
       cornering = cornering || p.ALPHA != 0;
