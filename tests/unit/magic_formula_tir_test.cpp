@@ -79,7 +79,11 @@ TEST(MagicFormulaTir, MalformedFilesGiveOneLineErrorsNamingLineAndKey) {
   EXPECT_EQ(units, "bad.tir:2: LENGTH: unit 'mm' is not supported (SI units only: meter, newton, radian, kg, second)");
   const std::string garbage = error_of("[MODEL]\nthis is not a key\n");
   EXPECT_EQ(garbage, "bad.tir:2: this is not a key: expected 'KEY = value'");
-  for (const std::string& e : {number, string_value, empty, units, garbage}) EXPECT_EQ(e.find('\n'), std::string::npos);
+  // An MF 6.1 file shares most keys but not the formulas: refused rather than evaluated as PAC2002.
+  const std::string version = error_of("[MODEL]\nPROPERTY_FILE_FORMAT = 'PAC2002'\nFITTYP = 61 $Magic Formula version number\n");
+  EXPECT_EQ(version, "bad.tir:3: FITTYP: 61 is not MF 5.2 / PAC2002 (FITTYP 6 or 21), the only version read here (it is MF 6.1)");
+  EXPECT_EQ(parse_tir("[MODEL]\nFITTYP = 21\n", "mf52.tir").coefficients.FITTYP, 21);
+  for (const std::string& e : {number, string_value, empty, units, garbage, version}) EXPECT_EQ(e.find('\n'), std::string::npos);
 }
 
 TEST(MagicFormulaTir, UnknownKeysAreKeptAndWrittenBack) {

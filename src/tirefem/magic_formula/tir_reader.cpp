@@ -142,6 +142,13 @@ TirFile parse_tir(std::string_view text, std::string_view source) {
 
     if (const CoefficientInfo* info = find_coefficient(key)) {
       file.coefficients.*(info->member) = parse_number(key, value, where);
+      // MF 6.1 and 6.2 files (FITTYP 61, 62) share most keys with PAC2002 but not their formulas: read as
+      // PAC2002 they would evaluate to other forces without a word.
+      if (key == "FITTYP" && file.coefficients.FITTYP != 6 && file.coefficients.FITTYP != 21)
+        where.fail(key, fmt::format("{} is not MF 5.2 / PAC2002 (FITTYP 6 or 21), the only version read here{}",
+                                    value, file.coefficients.FITTYP == 61 || file.coefficients.FITTYP == 62
+                                               ? fmt::format(" (it is MF 6.{})", file.coefficients.FITTYP - 60)
+                                               : ""));
     } else if (key == "FILE_TYPE") {
       file.file_type = unquote(value);
     } else if (key == "FILE_FORMAT") {
