@@ -126,10 +126,19 @@ TEST(CliTyreTest, RigWritesTheTableAndAFittedTirFile) {
   {
     std::ifstream tir_text(out / "rig/rig.tir");
     std::string line;
-    bool ptx3_flagged = false;
-    while (std::getline(tir_text, line))
-      ptx3_flagged = ptx3_flagged || (line.rfind("PTX3", 0) == 0 && line.find("not determined") != std::string::npos);
+    bool ptx3_flagged = false, combined_flagged = false, rolling_resistance_flagged = false;
+    const auto flagged = [&](const char* key, const char* why) {
+      return line.rfind(key, 0) == 0 && line.find(why) != std::string::npos;
+    };
+    while (std::getline(tir_text, line)) {
+      ptx3_flagged = ptx3_flagged || flagged("PTX3", "not determined");
+      // The rig has no combined-slip points: its combined-slip coefficients say so (0: no interaction).
+      combined_flagged = combined_flagged || flagged("RBX1 ", "no combined-slip points");
+      rolling_resistance_flagged = rolling_resistance_flagged || flagged("QSY1 ", "no rolling resistance");
+    }
     EXPECT_TRUE(ptx3_flagged);
+    EXPECT_TRUE(combined_flagged);
+    EXPECT_TRUE(rolling_resistance_flagged);
   }
   std::ifstream in(out / "summary.json");
   std::stringstream ss;

@@ -107,6 +107,13 @@ TEST(MagicFormulaRigFit, RecoversTheCoefficientsFromTheRigTable) {
   }
   for (const char* key : {"PDX3", "QBZ5", "QDZ4", "QBZ10"})
     EXPECT_NE(std::find(fit.not_determined.begin(), fit.not_determined.end(), key), fit.not_determined.end()) << key;
+  // What a rig of pure-slip sweeps never determines is listed too, at its neutral value (the file's own
+  // combined-slip and rolling-resistance coefficients are not 0: not recovered, and not pretended to be).
+  for (const NeverDetermined& k : never_determined_by_the_rig()) {
+    EXPECT_NE(std::find(fit.not_determined.begin(), fit.not_determined.end(), k.key), fit.not_determined.end()) << k.key;
+    EXPECT_EQ(c.*(find_coefficient(k.key)->member), find_coefficient(k.key)->neutral) << k.key;
+  }
+  EXPECT_NE(exact.RBX1, 0.0);
   for (auto [fitted, expected, name] :
        {std::tuple{c.QSX1, exact.QSX1, "QSX1"}, {c.QSX2, exact.QSX2, "QSX2"}, {c.QSX3, exact.QSX3, "QSX3"},
         {c.Q_FZ1, exact.Q_FZ1, "Q_FZ1"}, {c.Q_FZ2, exact.Q_FZ2, "Q_FZ2"},

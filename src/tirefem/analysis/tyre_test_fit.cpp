@@ -67,7 +67,9 @@ TyreTestFit fit_tyre_test(const TyreTestResult& t, const TyreDescription& tyre, 
       "relaxation lengths PTX*, PTY*: slip (cornering) stiffness over the standing tyre's longitudinal (lateral) "
       "stiffness, tread glued to the plane",
       "coefficients marked 'not determined' hold their neutral values (or, where 0 is singular, an assumed one): "
-      "the test did not excite them"};
+      "the test did not excite them",
+      "no combined-slip points: the combined-slip coefficients (RBX*, RBY*, RCX1, RCY1, REX*, REY*, RHX1, RHY*, "
+      "RVY*, SSZ*) are 0, with which the file's Fx and Fy do not reduce each other: not for combined slip"};
   // The standing tyre's stiffness at the load nearest FNOMIN: MF 6.1 keeps it in [STRUCTURAL], which PAC2002
   // has not; a comment, for the user of a transient or MF 6.1 model.
   const TyreTestLoad* nominal = nullptr;
@@ -88,6 +90,19 @@ TyreTestFit fit_tyre_test(const TyreTestResult& t, const TyreDescription& tyre, 
                        ? "not determined by the test: neutral value"
                        : "not determined by the test: an assumed value, its neutral value 0 being singular";
   }
+  for (const NeverDetermined& k : never_determined_by_the_rig())
+    switch (k.reason) {
+      case UndeterminedReason::combined_slip:
+        f.notes[k.key] = "not determined: no combined-slip points; neutral value, with which kappa and alpha "
+                         "do not reduce each other's force";
+        break;
+      case UndeterminedReason::rolling_resistance:
+        f.notes[k.key] = "not determined: the model is elastic (no hysteresis), no rolling resistance; neutral value";
+        break;
+      case UndeterminedReason::steady_state:
+        f.notes[k.key] = "not determined by a steady-state test: neutral value";
+        break;
+    }
   f.notes["WIDTH"] = "twice the carcass line's largest x";
   f.notes["RIM_RADIUS"] = "bead point of the carcass line";
   f.notes["RIM_WIDTH"] = "twice the bead point's x";

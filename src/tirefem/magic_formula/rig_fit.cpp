@@ -58,6 +58,22 @@ ChannelFitError fit_overturning_moment(const std::vector<RigPoint>& points, Magi
 
 }  // namespace
 
+std::span<const NeverDetermined> never_determined_by_the_rig() {
+  using enum UndeterminedReason;
+  static constexpr NeverDetermined keys[] = {
+      {"RBX1", combined_slip}, {"RBX2", combined_slip}, {"RCX1", combined_slip}, {"REX1", combined_slip},
+      {"REX2", combined_slip}, {"RHX1", combined_slip}, {"RBY1", combined_slip}, {"RBY2", combined_slip},
+      {"RBY3", combined_slip}, {"RCY1", combined_slip}, {"REY1", combined_slip}, {"REY2", combined_slip},
+      {"RHY1", combined_slip}, {"RHY2", combined_slip}, {"RVY1", combined_slip}, {"RVY2", combined_slip},
+      {"RVY3", combined_slip}, {"RVY4", combined_slip}, {"RVY5", combined_slip}, {"RVY6", combined_slip},
+      {"SSZ1", combined_slip}, {"SSZ2", combined_slip}, {"SSZ3", combined_slip}, {"SSZ4", combined_slip},
+      {"QSY1", rolling_resistance}, {"QSY2", rolling_resistance}, {"QSY3", rolling_resistance},
+      {"QSY4", rolling_resistance}, {"VERTICAL_DAMPING", steady_state}, {"Q_V1", steady_state},
+      {"Q_V2", steady_state}, {"Q_FCX", steady_state}, {"Q_FCY", steady_state}, {"QTZ1", steady_state},
+      {"MBELT", steady_state}};
+  return keys;
+}
+
 RigFit fit_rig_data(const RigData& data) {
   const auto start_time = std::chrono::steady_clock::now();
   if (!(data.FNOMIN > 0) || !(data.UNLOADED_RADIUS > 0))
@@ -88,6 +104,11 @@ RigFit fit_rig_data(const RigData& data) {
   fit.errors.push_back(fit_effective_rolling_radius(radii, fit.coefficients, fit.not_determined));
   for (const ChannelFitError& e : fit_relaxation_lengths(data.relaxation, fit.coefficients, fit.not_determined))
     fit.errors.push_back(e);
+
+  for (const NeverDetermined& k : never_determined_by_the_rig()) {
+    fit.coefficients.*(find_coefficient(k.key)->member) = find_coefficient(k.key)->neutral;
+    fit.not_determined.emplace_back(k.key);
+  }
 
   fit.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
   return fit;

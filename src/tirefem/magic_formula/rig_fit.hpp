@@ -8,6 +8,7 @@
 // = LMX = 1) by linear least squares from the points with kappa = 0, with the fitted model's Fy (QSX2
 // needs cambered points, QSX3 slip angles). Combined-slip points (kappa and alpha both non-zero) are not
 // used: the combined-slip coefficients are not fitted.
+#include <span>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,17 @@ struct RigFit {
   std::vector<GroupFitResult> groups;         // the three slip groups' details (evaluations, time)
   double seconds = 0;
 };
+
+// The keys a steady-state rig of pure-slip sweeps never determines, by why (fit_rig_data lists them in
+// not_determined; the .tir writer's notes say why): combined slip (R*, SSZ*: without points at κ and α
+// together, κ and α then do not reduce each other's force), rolling resistance (QSY*: the model is
+// elastic), and speed, damping and transient terms.
+enum class UndeterminedReason { combined_slip, rolling_resistance, steady_state };
+struct NeverDetermined {
+  const char* key;
+  UndeterminedReason reason;
+};
+std::span<const NeverDetermined> never_determined_by_the_rig();
 
 // Throws std::invalid_argument when FNOMIN or UNLOADED_RADIUS is not positive or a group has too few points.
 RigFit fit_rig_data(const RigData& data);
