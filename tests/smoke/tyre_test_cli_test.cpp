@@ -1,5 +1,5 @@
 // The virtual rig end to end (issue 12): tests/smoke/tyre_test_case.toml runs a small [[tyre_test]] (2 loads,
-// 7 slips, 7 slip angles, a cambered state, a vertical curve) on a coarse full mesh; the run must write the
+// 7 slips, 7 slip angles, a cambered state, a 4 × 2 combined-slip grid, a vertical curve) on a coarse full mesh; the run must write the
 // measurement table in SI units and W-axis signs, the plots, and a PAC2002 .tir that reads back, whose fit
 // passes through the FE points (RMS below 3% of the peak for Fx and Fy, 10% for Mz: issue 12's criteria),
 // with the signs of the W axes (braking Fx < 0, α > 0 gives Fy < 0 and PKY1 < 0). The tyre is its own mirror image, so its κ
@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tirefem/magic_formula/evaluator.hpp"
 #include "tirefem/magic_formula/tir_reader.hpp"
 
 namespace fs = std::filesystem;
@@ -69,8 +70,8 @@ TEST(CliTyreTest, RigWritesTheTableAndAFittedTirFile) {
                         "plots/rig_relaxation.gp"})
     EXPECT_TRUE(fs::exists(out / f)) << f;
   const auto rows = read_table(out / "rig/tyre_test.csv");
-  ASSERT_EQ(rows.size(), 2u * (1 + 1 + 7 + 7));
-  int braking = 0, positive_alpha = 0, cambered = 0;
+  ASSERT_EQ(rows.size(), 2u * (1 + 1 + 7 + 7 + 8));
+  int braking = 0, positive_alpha = 0, cambered = 0, combined = 0;
   for (const auto& r : rows) {
     // SI: N; held at the load (the sweeps and the cambered state within the load tolerance, 1e-3; the
     // straight-ahead free rolling, at the footprint's δz, within 2e-3)
@@ -97,6 +98,15 @@ TEST(CliTyreTest, RigWritesTheTableAndAFittedTirFile) {
       EXPECT_LE(std::abs(r.at("MZ")), 1e-9 * r.at("FZ"));
       EXPECT_LE(std::abs(r.at("MX")), 1e-9 * r.at("FZ"));
     }
+    if (r.at("SERIES") == 4.0) {
+      // The combined-slip grid (κ ±0.015, ±0.03 × α 1.5°, 3°), Fz held: both forces, each with its own sign.
+      ++combined;
+      EXPECT_NE(r.at("KAPPA"), 0.0);
+      EXPECT_GT(r.at("ALPHA"), 0.0);
+      EXPECT_EQ(r.at("FX") > 0, r.at("KAPPA") > 0);
+      EXPECT_LT(r.at("FY"), 0.0);
+      continue;
+    }
     if (r.at("ALPHA") > 1e-9) {
       ++positive_alpha;
       EXPECT_LT(r.at("FY"), 0) << "α > 0 gives Fy < 0 in the W axes";
@@ -110,6 +120,7 @@ TEST(CliTyreTest, RigWritesTheTableAndAFittedTirFile) {
   EXPECT_EQ(braking, 2 * 3);
   EXPECT_EQ(cambered, 2);
   EXPECT_EQ(positive_alpha, 2 * 3);
+  EXPECT_EQ(combined, 2 * 8);
   const tirefem::TirFile tir = tirefem::read_tir_file(out / "rig/rig.tir");
   const tirefem::MagicFormulaCoefficients& c = tir.coefficients;
   EXPECT_EQ(c.FNOMIN, 2000.0);
@@ -132,8 +143,9 @@ TEST(CliTyreTest, RigWritesTheTableAndAFittedTirFile) {
     };
     while (std::getline(tir_text, line)) {
       ptx3_flagged = ptx3_flagged || flagged("PTX3", "not determined");
-      // The rig has no combined-slip points: its combined-slip coefficients say so (0: no interaction).
-      combined_flagged = combined_flagged || flagged("RBX1 ", "no combined-slip points");
+      // The combined-slip grid gives the weighting functions' slope and shape; their shifts stay neutral.
+      combined_flagged = combined_flagged || flagged("RHX1 ", "not determined by the test's combined-slip points");
+      EXPECT_FALSE(flagged("RBX1 ", "not determined") || flagged("RBY1 ", "not determined")) << line;
       rolling_resistance_flagged = rolling_resistance_flagged || flagged("QSY1 ", "no rolling resistance");
     }
     EXPECT_TRUE(ptx3_flagged);
@@ -153,6 +165,34 @@ TEST(CliTyreTest, RigWritesTheTableAndAFittedTirFile) {
   EXPECT_LT(fy, 0.03);
   EXPECT_GE(mz, 0);
   EXPECT_LT(mz, 0.10);
+  // The combined-slip surfaces through the grid's points within 5% of their peak (observed 2.4% and 2.1%),
+  // and the file's Fx at κ 0.03 falls with α and keeps its sign (0 ≤ Gxα ≤ 1) up to 12°, as Fy at α 3°
+  // with κ up to 0.15.
+  const double fxc = fit_error(summary, "Fx combined"), fyc = fit_error(summary, "Fy combined");
+  std::printf("  combined slip fit RMS of peak: Fx %.4f, Fy %.4f; RBX1 %.2f RCX1 %.2f RBY1 %.2f RCY1 %.2f\n", fxc, fyc,
+              c.RBX1, c.RCX1, c.RBY1, c.RCY1);
+  EXPECT_GE(fxc, 0);
+  EXPECT_LT(fxc, 0.05);
+  EXPECT_GE(fyc, 0);
+  EXPECT_LT(fyc, 0.05);
+  {
+    using tirefem::SlipCombination;
+    const auto at = [&](double kappa, double alpha_deg) {
+      return tirefem::evaluate_magic_formula(c, {2000.0, kappa, alpha_deg * M_PI / 180, 0.0}, SlipCombination::combined);
+    };
+    double previous = at(0.03, 0.0).Fx;
+    for (double a = 1.0; a <= 12.0; a += 1.0) {
+      const double fx_at = at(0.03, a).Fx;
+      EXPECT_GE(fx_at, 0.0) << a;
+      EXPECT_LE(fx_at, previous) << a;
+      previous = fx_at;
+    }
+    const double pure = at(0.0, 3.0).Fy;
+    for (double k = 0.01; k <= 0.15; k += 0.01) {
+      EXPECT_LE(at(k, 3.0).Fy, 0.0) << k;
+      EXPECT_LE(std::abs(at(k, 3.0).Fy), std::abs(pure) * (1 + 1e-12)) << k;
+    }
+  }
   const double sk = fit_error(summary, "sigma_kappa"), sa = fit_error(summary, "sigma_alpha");
   EXPECT_GE(sk, 0);
   EXPECT_LT(sk, 1e-9);  // two loads, two coefficients each

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "case_reader_test_support.hpp"
+#include "tirefem/analysis/tyre_test.hpp"
 #include "tirefem/case/case_reader.hpp"
 
 namespace tirefem {
@@ -27,6 +28,7 @@ TEST(CaseReaderTyreTest, ReadsAFullStudy) {
                                      "slip_sweep = { from = -0.2, to = 0.1, points = 7 }\n"
                                      "angle_sweep = { from = -8.0, to = 10.0, points = 9 }\n"
                                      "cambers = [-3.0, 3.0]\n"
+                                     "combined = { slips = [-0.05, 0.05], slip_angles = [2.0, 6.0] }\n"
                                      "vertical = { max_deflection = 30.0, points = 6 }\n"),
                             "case.toml");
   ASSERT_EQ(c.tyre_tests.size(), 1u);
@@ -45,6 +47,11 @@ TEST(CaseReaderTyreTest, ReadsAFullStudy) {
   EXPECT_EQ(s.angle_sweep.points, 9);
   EXPECT_TRUE(s.angle_sweep.hold_load);
   EXPECT_EQ(s.cambers_deg, (std::vector<double>{-3.0, 3.0}));
+  ASSERT_TRUE(s.combined);
+  EXPECT_EQ(s.combined->slips, (std::vector<double>{-0.05, 0.05}));
+  EXPECT_EQ(s.combined->slip_angles_deg, (std::vector<double>{2.0, 6.0}));
+  EXPECT_TRUE(s.combined->hold_load);
+  EXPECT_EQ(tyre_test_points(s), 3 * (2 + 2 + 7 + 9 + 4));
   EXPECT_EQ(s.vertical_max_deflection, 30.0);
   EXPECT_EQ(s.vertical_points, 6);
   ASSERT_TRUE(s.mesh);
@@ -60,6 +67,7 @@ TEST(CaseReaderTyreTest, DefaultsAreTheIssuesRig) {
   EXPECT_EQ(s.angle_sweep.points, 15);
   EXPECT_EQ(s.friction, 0.7);
   EXPECT_TRUE(s.cambers_deg.empty());
+  EXPECT_FALSE(s.combined);
   EXPECT_EQ(s.vertical_points, 10);
 }
 
@@ -80,6 +88,17 @@ TEST(CaseReaderTyreTest, ErrorsNameTheField) {
             std::string::npos);
   EXPECT_NE(error_of(rig_with("cambers = [30.0]\n")).find("tyre_test[0].cambers[0]"), std::string::npos);
   EXPECT_NE(error_of(rig_with("vertical = { points = 0 }\n")).find("tyre_test[0].vertical.points"), std::string::npos);
+  EXPECT_NE(error_of(rig_with("combined = { slips = [0.0, 0.05], slip_angles = [2.0, 4.0] }\n"))
+                .find("tyre_test[0].combined.slips[0]: must not be 0"),
+            std::string::npos);
+  EXPECT_NE(error_of(rig_with("combined = { slips = [-0.05, 0.05], slip_angles = [4.0] }\n"))
+                .find("tyre_test[0].combined.slip_angles: must list at least two"),
+            std::string::npos);
+  EXPECT_NE(error_of(rig_with("combined = { slips = [-0.05, 0.05], slip_angles = [2.0, 4.0], hold = \"load\" }\n"))
+                .find("tyre_test[0].combined.hold: unknown key"),
+            std::string::npos);
+  EXPECT_NE(error_of(rig_with("combined = { slips = [-0.05, 0.05] }\n")).find("tyre_test[0].combined.slip_angles"),
+            std::string::npos);
   EXPECT_NE(error_of(rig_with("friction = -0.1\n")).find("tyre_test[0].friction"), std::string::npos);
   EXPECT_NE(error_of(rig_with("sweep = {}\n")).find("tyre_test[0].sweep: unknown key"), std::string::npos);
   // Study names are unique across all studies.

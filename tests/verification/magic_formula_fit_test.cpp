@@ -8,12 +8,15 @@
 #include <string>
 #include <vector>
 
+#include "tirefem/magic_formula/combined_slip_fit.hpp"
 #include "tirefem/magic_formula/evaluator.hpp"
 #include "tirefem/magic_formula/fitter.hpp"
 #include "tirefem/magic_formula/tir_reader.hpp"
 
 namespace tirefem {
 namespace {
+
+using M = MagicFormulaCoefficients;
 
 MagicFormulaCoefficients truth() {
   return read_tir_file(std::string(TIREFEM_SOURCE_DIR) + "/tests/verification/data/magic_formula/mf_185_80R14.tir")
@@ -198,6 +201,59 @@ TEST(MagicFormulaFit, FreeRollingCamberedPointsGiveTheCamberThrust) {
               worst_mz, peak_mz);
   EXPECT_LE(worst_fy, 0.05 * peak_fy);
   EXPECT_LE(worst_mz, 0.10 * peak_mz);
+}
+
+// A rig's combined-slip grid (kappa and alpha both non-zero) gives the weighting functions' slope, its fall
+// and shape (RBX1-2, RCX1, RBY1-2, RCY1): recovered exactly from a file whose other combined-slip terms
+// are neutral, and with the 185/80R14 file's own (curvature REX1 0.62, shifts, kappa-induced side force)
+// the fitted surfaces stay within a few per cent of its forces.
+TEST(MagicFormulaFit, CombinedSlipPointsGiveTheWeightingFunctions) {
+  const auto grid = [](const MagicFormulaCoefficients& c) {
+    std::vector<TyreTestPoint> points;
+    for (double load : {0.5, 1.0, 1.5})
+      for (double kappa : {-0.1, -0.05, -0.02, 0.02, 0.05, 0.1})
+        for (double alpha_deg : {2.0, 4.0, 8.0}) {
+          const double Fz = load * c.FNOMIN, alpha = alpha_deg * M_PI / 180;
+          const auto f = evaluate_magic_formula(c, {Fz, kappa, alpha, 0.0}, SlipCombination::combined);
+          points.push_back({Fz, kappa, alpha, 0.0, f.Fx, f.Fy, f.Mz});
+        }
+    return points;
+  };
+  const auto fit_with_grid = [&](const MagicFormulaCoefficients& exact) {
+    auto points = rig_points(exact);
+    const auto combined = grid(exact);
+    points.insert(points.end(), combined.begin(), combined.end());
+    MagicFormulaCoefficients c = fit_magic_formula(points, start_from(exact)).coefficients;
+    const CombinedSlipFit fit = fit_combined_slip(points, c);
+    double worst[2] = {0, 0}, peak[2] = {0, 0};
+    for (const TyreTestPoint& p : combined) {
+      const auto f = evaluate_magic_formula(c, {p.Fz, p.kappa, p.alpha, 0.0}, SlipCombination::combined);
+      worst[0] = std::max(worst[0], std::abs(f.Fx - p.Fx)), peak[0] = std::max(peak[0], std::abs(p.Fx));
+      worst[1] = std::max(worst[1], std::abs(f.Fy - p.Fy)), peak[1] = std::max(peak[1], std::abs(p.Fy));
+    }
+    return std::tuple{c, fit, worst[0] / peak[0], worst[1] / peak[1]};
+  };
+  MagicFormulaCoefficients plain = truth();
+  for (double M::*m : {&M::REX1, &M::REX2, &M::RHX1, &M::RBY3, &M::REY1, &M::REY2, &M::RHY1, &M::RHY2, &M::RVY1,
+                       &M::RVY2, &M::RVY3, &M::RVY4, &M::RVY5, &M::RVY6})
+    plain.*m = 0;
+  {
+    const auto [c, fit, fx, fy] = fit_with_grid(plain);
+    std::printf("combined slip, plain file: Fx %.2g, Fy %.2g of the peak; RBX1 %.6g RBX2 %.6g RCX1 %.6g RBY1 %.6g "
+                "RBY2 %.6g RCY1 %.6g\n", fx, fy, c.RBX1, c.RBX2, c.RCX1, c.RBY1, c.RBY2, c.RCY1);
+    for (const char* key : {"RBX1", "RBX2", "RCX1", "RBY1", "RBY2", "RCY1"}) EXPECT_TRUE(contains(fit.fitted, key)) << key;
+    for (const char* key : {"REX1", "RHX1", "RVY1", "SSZ1"}) EXPECT_TRUE(contains(fit.not_determined, key)) << key;
+    for (auto [fitted, expected, name] : {std::tuple{c.RBX1, plain.RBX1, "RBX1"}, {std::abs(c.RBX2), std::abs(plain.RBX2), "|RBX2|"},
+                                          {c.RCX1, plain.RCX1, "RCX1"}, {c.RBY1, plain.RBY1, "RBY1"},
+                                          {std::abs(c.RBY2), std::abs(plain.RBY2), "|RBY2|"}, {c.RCY1, plain.RCY1, "RCY1"}})
+      EXPECT_LE(std::abs(fitted - expected), 1e-4 * std::abs(expected)) << name << " " << fitted << " vs " << expected;
+  }
+  {
+    const auto [c, fit, fx, fy] = fit_with_grid(truth());
+    std::printf("combined slip, the whole file: Fx %.3f, Fy %.3f of the peak\n", fx, fy);
+    EXPECT_LE(fx, 0.05);
+    EXPECT_LE(fy, 0.05);
+  }
 }
 
 // A load held to its tolerance is one load level: the coefficients of the load's influence are not determined

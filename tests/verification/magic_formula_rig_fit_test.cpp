@@ -113,6 +113,12 @@ TEST(MagicFormulaRigFit, RecoversTheCoefficientsFromTheRigTable) {
     EXPECT_NE(std::find(fit.not_determined.begin(), fit.not_determined.end(), k.key), fit.not_determined.end()) << k.key;
     EXPECT_EQ(c.*(find_coefficient(k.key)->member), find_coefficient(k.key)->neutral) << k.key;
   }
+  // No combined-slip points in this table: every combined-slip key is listed, at its neutral value.
+  for (const char* key : combined_slip_keys()) {
+    EXPECT_NE(std::find(fit.not_determined.begin(), fit.not_determined.end(), key), fit.not_determined.end()) << key;
+    EXPECT_EQ(c.*(find_coefficient(key)->member), find_coefficient(key)->neutral) << key;
+  }
+  EXPECT_FALSE(fit.combined_slip_points);
   EXPECT_NE(exact.RBX1, 0.0);
   for (auto [fitted, expected, name] :
        {std::tuple{c.QSX1, exact.QSX1, "QSX1"}, {c.QSX2, exact.QSX2, "QSX2"}, {c.QSX3, exact.QSX3, "QSX3"},

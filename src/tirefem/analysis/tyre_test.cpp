@@ -35,7 +35,9 @@ TyreTestRow row(TyreTestRow::Kind kind, double target, const RollingFigures& f, 
 }  // namespace
 
 int tyre_test_points(const TyreTestStudy& s) {
-  const int per_load = 2 + static_cast<int>(s.cambers_deg.size()) + s.slip_sweep.points + s.angle_sweep.points;
+  const int combined = s.combined ? static_cast<int>(s.combined->slips.size() * s.combined->slip_angles_deg.size()) : 0;
+  const int per_load =
+      2 + static_cast<int>(s.cambers_deg.size()) + s.slip_sweep.points + s.angle_sweep.points + combined;
   return per_load * static_cast<int>(s.load_factors.size());
 }
 
@@ -54,7 +56,8 @@ TyreTestProgress::TyreTestProgress(const TyreTestStudy& study, TyreTestLongitudi
     Series kappa, alpha;
     kappa.points = kappa.solved = 1 + (half ? 0 : cambers) + study.slip_sweep.points;
     kappa.weight = half ? kHalfModelShare * load_work : load_work;
-    alpha.points = 1 + (half ? cambers : 0) + study.angle_sweep.points;
+    alpha.points = 1 + (half ? cambers : 0) + study.angle_sweep.points +
+                   (study.combined ? static_cast<int>(study.combined->slips.size() * study.combined->slip_angles_deg.size()) : 0);
     // The rig mirrors its α sweep (camber 0) where the tyre is its own mirror image: where the κ series
     // runs on the half model.
     const SlipAngleSweep& sweep = study.angle_sweep;
@@ -126,6 +129,7 @@ RollingStudy tyre_test_rolling_study(const TyreTestStudy& study, std::size_t loa
     r.angle_sweep->camber_deg = 0.0;
     r.angle_sweep->hold_load = true;
     r.angle_sweep->mirror_negative_angles = true;  // where the tyre is its own mirror image (camber 0 here)
+    r.combined = study.combined;                    // after the α sweep (RollingStudy), Fz held
     return r;  // free rolling is solved all the same (the sweep starts from it), not reported twice
   }
   r.states.push_back({});  // free rolling: Re at this load
@@ -223,6 +227,9 @@ TyreTestResult assemble_tyre_test(const TyreTestStudy& study, double unloaded_ra
                              radius(p.deflection_mm), re, p.counts));
         t.rows.back().mirrored = p.mirrored;
       }
+      for (const SweepPoint& p : r->combined)
+        t.rows.push_back(row(Kind::combined, l.target_load_N, p.figures, p.slip, p.slip_angle_deg, p.camber_deg,
+                             radius(p.deflection_mm), re, p.counts));
     }
   }
   t.vertical = std::move(vertical);

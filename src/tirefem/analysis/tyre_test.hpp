@@ -83,7 +83,7 @@ class TyreTestProgress {
 // FY to the left, MZ the aligning moment, MX the overturning moment, all at the contact centre;
 // ALPHA > 0 gives FY < 0; GAMMA > 0 leans the wheel's top to the right.
 struct TyreTestRow {
-  enum class Kind { free, slip_sweep, angle_sweep, camber };
+  enum class Kind { free, slip_sweep, angle_sweep, camber, combined };
   Kind kind = Kind::free;
   double target_load_N = 0.0;
   double Fz_N = 0.0, kappa = 0.0, alpha_rad = 0.0, gamma_rad = 0.0;

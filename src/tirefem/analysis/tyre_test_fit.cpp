@@ -67,9 +67,12 @@ TyreTestFit fit_tyre_test(const TyreTestResult& t, const TyreDescription& tyre, 
       "relaxation lengths PTX*, PTY*: slip (cornering) stiffness over the standing tyre's longitudinal (lateral) "
       "stiffness, tread glued to the plane",
       "coefficients marked 'not determined' hold their neutral values (or, where 0 is singular, an assumed one): "
-      "the test did not excite them",
-      "no combined-slip points: the combined-slip coefficients (RBX*, RBY*, RCX1, RCY1, REX*, REY*, RHX1, RHY*, "
-      "RVY*, SSZ*) are 0, with which the file's Fx and Fy do not reduce each other: not for combined slip"};
+      "the test did not excite them"};
+  if (!fit.combined_slip_points)
+    f.header_comments.push_back(
+        "no combined-slip points: the combined-slip coefficients (RBX*, RBY*, RCX1, RCY1, REX*, REY*, RHX1, RHY*, "
+        "RVY*, SSZ*) are 0, with which the file's Fx and Fy do not reduce each other: not for combined slip "
+        "(a tyre test's `combined` grid fits RBX1-2, RCX1, RBY1-2, RCY1)");
   // The standing tyre's stiffness at the load nearest FNOMIN: MF 6.1 keeps it in [STRUCTURAL], which PAC2002
   // has not; a comment, for the user of a transient or MF 6.1 model.
   const TyreTestLoad* nominal = nullptr;
@@ -92,10 +95,6 @@ TyreTestFit fit_tyre_test(const TyreTestResult& t, const TyreDescription& tyre, 
   }
   for (const NeverDetermined& k : never_determined_by_the_rig())
     switch (k.reason) {
-      case UndeterminedReason::combined_slip:
-        f.notes[k.key] = "not determined: no combined-slip points; neutral value, with which kappa and alpha "
-                         "do not reduce each other's force";
-        break;
       case UndeterminedReason::rolling_resistance:
         f.notes[k.key] = "not determined: the model is elastic (no hysteresis), no rolling resistance; neutral value";
         break;
@@ -103,6 +102,12 @@ TyreTestFit fit_tyre_test(const TyreTestResult& t, const TyreDescription& tyre, 
         f.notes[k.key] = "not determined by a steady-state test: neutral value";
         break;
     }
+  for (const char* key : combined_slip_keys())
+    if (std::find(fit.not_determined.begin(), fit.not_determined.end(), key) != fit.not_determined.end())
+      f.notes[key] = fit.combined_slip_points
+                         ? "not determined by the test's combined-slip points: neutral value"
+                         : "not determined: no combined-slip points; neutral value, with which kappa and alpha do "
+                           "not reduce each other's force";
   f.notes["WIDTH"] = "twice the carcass line's largest x";
   f.notes["RIM_RADIUS"] = "bead point of the carcass line";
   f.notes["RIM_WIDTH"] = "twice the bead point's x";

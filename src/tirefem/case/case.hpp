@@ -290,6 +290,9 @@ struct TyreTestStudy {
   SlipSweep slip_sweep{-0.15, 0.15, 15, true, SweepSpacing::quadratic};
   SlipAngleSweep angle_sweep{-12.0, 12.0, 15, 0.0, 0.0, true, SweepSpacing::quadratic};
   std::vector<double> cambers_deg;         // free-rolling states at each load (camber thrust)
+  // A (κ, α) grid at each load, Fz held, on the full model after the α sweep: the combined-slip
+  // weighting functions (RBX1-2, RCX1, RBY1-2, RCY1). Unset: none, and those keys stay neutral.
+  std::optional<CombinedSlipGrid> combined;
   double vertical_max_deflection = 40.0;   // mm, the load–deflection curve from the undeformed tyre
   int vertical_points = 10;
   std::optional<MeshSettings> mesh;        // unset: the case's

@@ -23,7 +23,7 @@ void read_sweep_range(TomlFields& f, const toml::node& n, const std::string& pat
 
 TyreTestStudy read_tyre_test(TomlFields& f, const toml::node& n, const std::string& path, const MeshSettings& case_mesh) {
   const toml::table& t = f.table(n, path, {"name", "nominal_load", "loads", "load_tolerance", "friction", "slip_sweep",
-                                           "angle_sweep", "cambers", "vertical", "mesh"});
+                                           "angle_sweep", "cambers", "combined", "vertical", "mesh"});
   TyreTestStudy s;
   s.name = f.string(f.need(t, path, "name", "a string (the study's name)"), join(path, "name"));
   if (const toml::node* v = f.get(t, path, "mesh")) s.mesh = read_mesh(f, *v, join(path, "mesh"), case_mesh);
@@ -39,6 +39,16 @@ TyreTestStudy read_tyre_test(TomlFields& f, const toml::node& n, const std::stri
     read_sweep_range(f, *v, join(path, "angle_sweep"), " (slip angle, degrees)", s.angle_sweep.from,
                      s.angle_sweep.to, s.angle_sweep.points, s.angle_sweep.spacing);
   if (const toml::node* v = f.get(t, path, "cambers")) s.cambers_deg = f.numbers(*v, join(path, "cambers"), " (degrees)");
+  if (const toml::node* v = f.get(t, path, "combined")) {
+    const std::string sp = join(path, "combined");
+    const toml::table& w = f.table(*v, sp, {"slips", "slip_angles"});
+    CombinedSlipGrid g;
+    g.slips = f.numbers(f.need(w, sp, "slips", "an array of slips κ"), join(sp, "slips"), " (slip κ)");
+    g.slip_angles_deg = f.numbers(f.need(w, sp, "slip_angles", "an array of slip angles (degrees)"),
+                                  join(sp, "slip_angles"), " (degrees)");
+    g.hold_load = true;
+    s.combined = std::move(g);
+  }
   if (const toml::node* v = f.get(t, path, "vertical")) {
     const std::string sp = join(path, "vertical");
     const toml::table& w = f.table(*v, sp, {"max_deflection", "points"});
@@ -88,6 +98,25 @@ void check_tyre_test(const FieldChecker& c, const TyreTestStudy& s, const std::s
   c.int_range(s.angle_sweep.points, 3, kMaxSweepPoints, join(ap, "points"));
   for (std::size_t k = 0; k < s.cambers_deg.size(); ++k)
     check_angle(c, s.cambers_deg[k], index(join(path, "cambers"), k), kMaxCamberDeg);
+  if (s.combined) {
+    const std::string gp = join(path, "combined");
+    // Combined points have both slips: a zero one is a pure-slip point, which the sweeps give already.
+    for (std::size_t k = 0; k < s.combined->slips.size(); ++k) {
+      const std::string p = index(join(gp, "slips"), k);
+      check_slip(c, s.combined->slips[k], p);
+      if (s.combined->slips[k] == 0) c.fail(p, "must not be 0 (κ = 0 is the α sweep's)");
+    }
+    for (std::size_t k = 0; k < s.combined->slip_angles_deg.size(); ++k) {
+      const std::string p = index(join(gp, "slip_angles"), k);
+      check_angle(c, s.combined->slip_angles_deg[k], p, kMaxSlipAngleDeg);
+      if (s.combined->slip_angles_deg[k] == 0) c.fail(p, "must not be 0 (α = 0 is the κ sweep's)");
+    }
+    if (s.combined->slips.size() < 2) c.fail(join(gp, "slips"), "must list at least two slips κ");
+    if (s.combined->slip_angles_deg.size() < 2) c.fail(join(gp, "slip_angles"), "must list at least two slip angles");
+    if (s.combined->slips.size() * s.combined->slip_angles_deg.size() > static_cast<std::size_t>(kMaxSweepPoints))
+      c.fail(gp, fmt::format("at most {} (κ, α) points (got {} × {})", kMaxSweepPoints, s.combined->slips.size(),
+                             s.combined->slip_angles_deg.size()));
+  }
   LoadCurveStudy vertical;
   vertical.max_deflection = s.vertical_max_deflection;
   vertical.points = s.vertical_points;

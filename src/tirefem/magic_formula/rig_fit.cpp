@@ -61,12 +61,6 @@ ChannelFitError fit_overturning_moment(const std::vector<RigPoint>& points, Magi
 std::span<const NeverDetermined> never_determined_by_the_rig() {
   using enum UndeterminedReason;
   static constexpr NeverDetermined keys[] = {
-      {"RBX1", combined_slip}, {"RBX2", combined_slip}, {"RCX1", combined_slip}, {"REX1", combined_slip},
-      {"REX2", combined_slip}, {"RHX1", combined_slip}, {"RBY1", combined_slip}, {"RBY2", combined_slip},
-      {"RBY3", combined_slip}, {"RCY1", combined_slip}, {"REY1", combined_slip}, {"REY2", combined_slip},
-      {"RHY1", combined_slip}, {"RHY2", combined_slip}, {"RVY1", combined_slip}, {"RVY2", combined_slip},
-      {"RVY3", combined_slip}, {"RVY4", combined_slip}, {"RVY5", combined_slip}, {"RVY6", combined_slip},
-      {"SSZ1", combined_slip}, {"SSZ2", combined_slip}, {"SSZ3", combined_slip}, {"SSZ4", combined_slip},
       {"QSY1", rolling_resistance}, {"QSY2", rolling_resistance}, {"QSY3", rolling_resistance},
       {"QSY4", rolling_resistance}, {"VERTICAL_DAMPING", steady_state}, {"Q_V1", steady_state},
       {"Q_V2", steady_state}, {"Q_FCX", steady_state}, {"Q_FCY", steady_state}, {"QTZ1", steady_state},
@@ -105,6 +99,10 @@ RigFit fit_rig_data(const RigData& data) {
   for (const ChannelFitError& e : fit_relaxation_lengths(data.relaxation, fit.coefficients, fit.not_determined))
     fit.errors.push_back(e);
 
+  const CombinedSlipFit combined = fit_combined_slip(points, fit.coefficients);
+  fit.errors.insert(fit.errors.end(), combined.errors.begin(), combined.errors.end());
+  fit.not_determined.insert(fit.not_determined.end(), combined.not_determined.begin(), combined.not_determined.end());
+  fit.combined_slip_points = !combined.errors.empty();
   for (const NeverDetermined& k : never_determined_by_the_rig()) {
     fit.coefficients.*(find_coefficient(k.key)->member) = find_coefficient(k.key)->neutral;
     fit.not_determined.emplace_back(k.key);

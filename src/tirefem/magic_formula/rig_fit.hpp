@@ -6,12 +6,13 @@
 // groups from points with kappa = 0 (gamma = 0 for the pure-slip passes, the cambered sweeps for the camber
 // terms, see fitter.hpp); the overturning moment Mx = R0 Fz (QSX1 - QSX2 gamma + QSX3 Fy/Fz0) (4.E69, LVMX
 // = LMX = 1) by linear least squares from the points with kappa = 0, with the fitted model's Fy (QSX2
-// needs cambered points, QSX3 slip angles). Combined-slip points (kappa and alpha both non-zero) are not
-// used: the combined-slip coefficients are not fitted.
+// needs cambered points, QSX3 slip angles). Combined-slip points (kappa and alpha both non-zero) give the
+// combined-slip weighting functions (combined_slip_fit.hpp); without them those keys stay neutral.
 #include <span>
 #include <string>
 #include <vector>
 
+#include "tirefem/magic_formula/combined_slip_fit.hpp"
 #include "tirefem/magic_formula/fitter.hpp"
 #include "tirefem/magic_formula/relaxation_fit.hpp"
 #include "tirefem/magic_formula/vertical_fit.hpp"
@@ -50,14 +51,14 @@ struct RigFit {
   std::vector<ChannelFitError> errors;        // Fx, Fy, Mz, Mx, Fz (load-deflection), Re, sigma_kappa, sigma_alpha
   std::vector<std::string> not_determined;    // keys of the fitted groups that the data do not determine
   std::vector<GroupFitResult> groups;         // the three slip groups' details (evaluations, time)
+  bool combined_slip_points = false;          // the combined-slip weighting functions were fitted
   double seconds = 0;
 };
 
-// The keys a steady-state rig of pure-slip sweeps never determines, by why (fit_rig_data lists them in
-// not_determined; the .tir writer's notes say why): combined slip (R*, SSZ*: without points at κ and α
-// together, κ and α then do not reduce each other's force), rolling resistance (QSY*: the model is
-// elastic), and speed, damping and transient terms.
-enum class UndeterminedReason { combined_slip, rolling_resistance, steady_state };
+// The keys a steady-state rig never determines, by why (fit_rig_data lists them in not_determined; the
+// .tir writer's notes say why): rolling resistance (QSY*: the model is elastic), and speed, damping and
+// transient terms. (The combined-slip keys: combined_slip_fit.hpp.)
+enum class UndeterminedReason { rolling_resistance, steady_state };
 struct NeverDetermined {
   const char* key;
   UndeterminedReason reason;

@@ -88,7 +88,7 @@ CsvTable tyre_test_table(const TyreTestResult& t) {
       "units: FZ FX FY N; KAPPA -; ALPHA GAMMA rad; MX MZ N*m; RE RL PATCH_LENGTH PATCH_WIDTH m; TIME s",
       "RE: effective rolling radius of free rolling at the load; RL: loaded radius (axle above the road) at the "
       "point; PATCH_*: the static footprint at the load",
-      "SERIES: 0 free rolling, 1 longitudinal slip sweep, 2 slip-angle sweep, 3 cambered free rolling; FZ held at "
+      "SERIES: 0 free rolling, 1 longitudinal slip sweep, 2 slip-angle sweep, 3 cambered free rolling, 4 combined slip; FZ held at "
       "TARGET_FZ in the sweeps"};
   if (std::any_of(t.rows.begin(), t.rows.end(), [](const TyreTestRow& r) { return r.mirrored; }))
     table.comments.push_back(
@@ -265,7 +265,9 @@ toml::table tyre_test_summary(const TyreTestResult& t, const TyreTestFit* fit) {
           {"PCX1", c.PCX1}, {"PDX1", c.PDX1}, {"PDX2", c.PDX2}, {"PEX1", c.PEX1}, {"PKX1", c.PKX1}, {"PKX2", c.PKX2},
           {"PKX3", c.PKX3}, {"PCY1", c.PCY1}, {"PDY1", c.PDY1}, {"PDY2", c.PDY2}, {"PEY1", c.PEY1}, {"PKY1", c.PKY1},
           {"PKY2", c.PKY2}, {"QBZ1", c.QBZ1}, {"QCZ1", c.QCZ1}, {"QDZ1", c.QDZ1}, {"QSX1", c.QSX1}, {"PTX1", c.PTX1},
-          {"PTX2", c.PTX2}, {"PTX3", c.PTX3}, {"PTY1", c.PTY1}, {"PTY2", c.PTY2}})
+          {"PTX2", c.PTX2}, {"PTX3", c.PTX3}, {"PTY1", c.PTY1}, {"PTY2", c.PTY2}, {"PVY3", c.PVY3}, {"QDZ8", c.QDZ8},
+          {"QSX2", c.QSX2}, {"RBX1", c.RBX1}, {"RBX2", c.RBX2}, {"RCX1", c.RCX1}, {"RBY1", c.RBY1}, {"RBY2", c.RBY2},
+          {"RCY1", c.RCY1}})
       coefficients.insert(key, value);
     s.insert("magic_formula", toml::table{{"tir_file", t.name + "/" + t.name + ".tir"},
                                           {"fit_time_s", fit->seconds},
