@@ -19,7 +19,8 @@
 // at a positive and a negative one; the camber shifts PVY3 (camber thrust) and QDZ8 (the residual moment's
 // camber term), with cambered points at 2 load levels PVY4 and QDZ9, need cambered points only, free-rolling
 // ones suffice (PHY3 and QHZ3, which such points cannot tell from them, then stay neutral). The
-// sign-dependent terms (PEX4, PEY3, PEY4, QEZ4, QEZ5) need slips of both signs. QBZ10 is never fitted: it
+// sign-dependent terms (PEX4, PEY3, PEY4, QEZ4, QEZ5) and the shifts (PHX1-2, PVX1-2, PHY1-2, PVY1-2,
+// QHZ1-2: from one side they trade against each other) need slips of both signs. QBZ10 is never fitted: it
 // multiplies By Cy, nearly proportional to QBZ9 over a rig's loads. A coefficient not fitted is set to
 // its neutral value and listed in `not_determined`.
 // Parametrisation: the curvature factors E (4.E14, 4.E24) are fitted as E+ = E1(1 - E4), E- = E1(1 + E4),
