@@ -67,7 +67,7 @@ TEST(CliTyreTest, RigWritesTheTableAndAFittedTirFile) {
   ASSERT_EQ(std::system(command.c_str()), 0);
   for (const char* f : {"rig/tyre_test.csv", "rig/vertical.csv", "rig/rig.tir", "plots/rig_fx_kappa.gp",
                         "plots/rig_fy_alpha.gp", "plots/rig_mz_alpha.gp", "plots/rig_vertical.gp", "rig/loads.csv",
-                        "plots/rig_relaxation.gp"})
+                        "plots/rig_relaxation.gp", "plots/rig_combined.gp"})
     EXPECT_TRUE(fs::exists(out / f)) << f;
   const auto rows = read_table(out / "rig/tyre_test.csv");
   ASSERT_EQ(rows.size(), 2u * (1 + 1 + 7 + 7 + 8));

@@ -160,6 +160,8 @@ toml::table report_tyre_test(const ResultsFolder& folder, ReportWriter& plots, c
     plots.plot(t.name + "_vertical", tyre_test_vertical_plot(t, f));
     if (const Plot relaxation = tyre_test_relaxation_plot(t, f); !relaxation.series.empty())
       plots.plot(t.name + "_relaxation", relaxation);
+    if (const Plot combined = tyre_test_combined_plot(t, f); !combined.series.empty())
+      plots.plot(t.name + "_combined", combined);
   });
   return tyre_test_summary(t, f);
 }

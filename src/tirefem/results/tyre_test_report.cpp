@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -167,6 +169,34 @@ Plot tyre_test_relaxation_plot(const TyreTestResult& t, const TyreTestFit* fit) 
   }
   for (PlotSeries* s : {&kappa, &alpha})
     if (!s->x.empty()) p.series.push_back(std::move(*s));
+  return p;
+}
+
+Plot tyre_test_combined_plot(const TyreTestResult& t, const TyreTestFit* fit) {
+  Plot p{fmt::format("{}: combined slip (W axes, Fz held): FX against FY", t.name), "FY [N]", "FX [N]", {}};
+  std::map<double, PlotSeries> points;                    // per target load
+  std::map<std::pair<double, double>, double> kappa_lo, kappa_hi;  // per (load, α): the grid's κ range
+  for (const TyreTestRow& r : t.rows) {
+    if (r.kind != TyreTestRow::Kind::combined) continue;
+    PlotSeries& s = points[r.target_load_N];
+    if (s.title.empty()) s = {fmt::format("Fz {:.0f} N", r.target_load_N), {}, {}, "points pt 7 ps 1.2"};
+    s.x.push_back(r.Fy_N), s.y.push_back(r.Fx_N);
+    const std::pair key{r.target_load_N, r.alpha_rad};
+    kappa_lo[key] = std::min(kappa_lo.contains(key) ? kappa_lo[key] : r.kappa, r.kappa);
+    kappa_hi[key] = std::max(kappa_hi.contains(key) ? kappa_hi[key] : r.kappa, r.kappa);
+  }
+  if (fit)
+    for (const auto& [key, lo] : kappa_lo) {
+      const auto [load, alpha] = key;
+      PlotSeries curve{fmt::format("Magic Formula, {:.0f} N, α {:g}°", load, alpha * kDegreesPerRadian), {}, {}, "lines"};
+      for (int i = 0; i <= 40; ++i) {
+        const double kappa = lo + (kappa_hi[key] - lo) * i / 40.0;
+        const auto f = evaluate_magic_formula(fit->tir.coefficients, {load, kappa, alpha, 0.0}, SlipCombination::combined);
+        curve.x.push_back(f.Fy), curve.y.push_back(f.Fx);
+      }
+      p.series.push_back(std::move(curve));
+    }
+  for (auto& [load, s] : points) p.series.push_back(std::move(s));
   return p;
 }
 

@@ -30,6 +30,9 @@ Plot tyre_test_vertical_plot(const TyreTestResult& result, const TyreTestFit* fi
 // The relaxation lengths σκ and σα (mm) against Fz: the rig's (K/C per load) and, with `fit`, the .tir's
 // (PTX*, PTY*). No series when the rig measured none.
 Plot tyre_test_relaxation_plot(const TyreTestResult& result, const TyreTestFit* fit = nullptr);
+// The combined-slip grid's points, FX against FY per load, with the fit's curves over κ at each slip angle;
+// no series without combined points.
+Plot tyre_test_combined_plot(const TyreTestResult& result, const TyreTestFit* fit = nullptr);
 
 toml::table tyre_test_summary(const TyreTestResult& result, const TyreTestFit* fit = nullptr);
 // One line for the progress output: the fit's errors and the FNOMIN-normalised figures beside those of
