@@ -22,7 +22,7 @@ constexpr const char* kKeys[] = {"RBX1", "RBX2", "RCX1", "REX1", "REX2", "RHX1",
                                  "RVY3", "RVY4", "RVY5", "RVY6", "SSZ1", "SSZ2", "SSZ3", "SSZ4"};
 
 // The weighting function of one force, G = cos(C atan(B s)) in the other slip s with B = B1 cos(atan(B2 s')):
-// its slope factor B1 > 0 (exp) and shape C > 0 (exp) need two levels of s (|alpha| for Fx, |kappa| for Fy),
+// its slope factor B1 (within kSlope) and shape C (within kShape) need two levels of s (|alpha| for Fx, |kappa| for Fy),
 // the slope's fall B2 with the force's own slip s' two levels of that too.
 struct Weighting {
   const char* name;  // channel

@@ -182,8 +182,10 @@ Plot tyre_test_combined_plot(const TyreTestResult& t, const TyreTestFit* fit) {
     if (s.title.empty()) s = {fmt::format("Fz {:.0f} N", r.target_load_N), {}, {}, "points pt 7 ps 1.2"};
     s.x.push_back(r.Fy_N), s.y.push_back(r.Fx_N);
     const std::pair key{r.target_load_N, r.alpha_rad};
-    kappa_lo[key] = std::min(kappa_lo.contains(key) ? kappa_lo[key] : r.kappa, r.kappa);
-    kappa_hi[key] = std::max(kappa_hi.contains(key) ? kappa_hi[key] : r.kappa, r.kappa);
+    double& lo = kappa_lo.try_emplace(key, r.kappa).first->second;
+    double& hi = kappa_hi.try_emplace(key, r.kappa).first->second;
+    lo = std::min(lo, r.kappa);
+    hi = std::max(hi, r.kappa);
   }
   if (fit)
     for (const auto& [key, lo] : kappa_lo) {
