@@ -112,8 +112,7 @@ FrictionPlan TreadFrictionForm::plan(const Eigen::VectorXd& u, const std::vector
         anchor = FrictionPlanPoint{};
         anchor.anchor_a = previous_out >= 0 ? previous_out : q;
         anchor.anchor_b = q;
-        const double w = previous_out >= 0 && g != previous_g ? -previous_g / (g - previous_g) : 1.0;
-        anchor.anchor_weight = std::clamp(w, 0.0, 1.0);
+        anchor.anchor_weight = previous_out >= 0 ? entry_weight(previous_g, g) : 1.0;
         const double wa = 1.0 - anchor.anchor_weight, wb = anchor.anchor_weight;
         anchor_shear = 0.0;
         anchor_angle = previous_out >= 0 ? wa * previous_angle + wb * flow_angle(q) : flow_angle(q);
@@ -162,8 +161,8 @@ int TreadFrictionForm::contact_outside_window(const Eigen::VectorXd& u) const {
   return n;
 }
 
-TreadFrictionForm::PointForce TreadFrictionForm::point_force(int q, const FrictionPlanPoint& pp, const Eigen::VectorXd& u,
-                                                               bool released) const {
+TreadFrictionForm::PointForce TreadFrictionForm::point_force(int q, const FrictionPlanPoint& pp,
+                                                               const Eigen::VectorXd& u) const {
   PointForce out;
   const TreadPoint& p = points_[q];
   const PointKinematics k = kinematics(q, u);
@@ -182,9 +181,11 @@ TreadFrictionForm::PointForce TreadFrictionForm::point_force(int q, const Fricti
   } else {
     // eq. (17) {Fst}, [Kst]: (G/hp) s, with s from the anchor (eq. 16).
     const double c = shear_modulus_ / p.height * p.weight;
-    const double wb = pp.anchor_weight, wa = 1.0 - wb;
     const PointKinematics ka = kinematics(pp.anchor_a, u);
     const PointKinematics kb = pp.anchor_b == pp.anchor_a ? ka : kinematics(pp.anchor_b, u);
+    const bool entry = !pp.anchored_on_slip && pp.anchor_a != pp.anchor_b;
+    const double wb = entry ? entry_weight(ka.penetration.value, kb.penetration.value) : pp.anchor_weight;
+    const double wa = 1.0 - wb;
     double anchor_shear = 0.0;
     Eigen::Vector3d d_anchor_shear = Eigen::Vector3d::Zero();
     if (pp.anchored_on_slip) {
@@ -197,9 +198,9 @@ TreadFrictionForm::PointForce TreadFrictionForm::point_force(int q, const Fricti
         anchor_shear + rolling_radius_ * (flow_angle(q) - anchor_angle) - (k.travel.value - anchor_travel);
     magnitude = c * shear;
     d_self = -c * k.travel.gradient;
-    // Released plan: the entry weight w = −g_a / (g_b − g_a) follows u too (frozen: a constant).
+    // The entry weight w = −g_a / (g_b − g_a) follows u too.
     Eigen::Vector3d dw_a = Eigen::Vector3d::Zero(), dw_b = Eigen::Vector3d::Zero();
-    if (released && pp.anchor_a != pp.anchor_b && wb > 0.0 && wb < 1.0) {
+    if (entry && wb > 0.0 && wb < 1.0) {
       const double ga = ka.penetration.value, gb = kb.penetration.value, d2 = (gb - ga) * (gb - ga);
       const double ds_dw = -rolling_radius_ * (flow_angle(pp.anchor_b) - flow_angle(pp.anchor_a)) +
                            (kb.travel.value - ka.travel.value);
@@ -255,7 +256,7 @@ void TreadFrictionForm::assemble(const FormInput& input, SparseSystem& system) c
           const FrictionPlanPoint& pp = plan[q];
           if (pp.status == TreadContact::out) continue;
           const TreadPoint& p = points_[q];
-          const PointForce f = point_force(q, pp, input.displacement, released);
+          const PointForce f = point_force(q, pp, input.displacement);
           sums.add_residual(p.element, p.shape, -f.force);
           if (!input.with_tangent) continue;
           sums.add_tangent(p.element, p.shape, p.element, p.shape, -f.d_self);
@@ -285,9 +286,11 @@ std::vector<TreadTraction> TreadFrictionForm::evaluate(const Eigen::VectorXd& u)
     if (pp.status == TreadContact::slip) {
       tr.shear = slip_shear(q, k.penetration.value, pp.sign);
     } else {
-      const double wb = pp.anchor_weight, wa = 1.0 - wb;
       const PointKinematics ka = kinematics(pp.anchor_a, u);
       const PointKinematics kb = kinematics(pp.anchor_b, u);
+      const bool entry = !pp.anchored_on_slip && pp.anchor_a != pp.anchor_b;
+      const double wb = entry ? entry_weight(ka.penetration.value, kb.penetration.value) : pp.anchor_weight;
+      const double wa = 1.0 - wb;
       const double anchor_shear = pp.anchored_on_slip ? slip_shear(pp.anchor_a, ka.penetration.value, pp.sign) : 0.0;
       tr.shear = anchor_shear +
                  rolling_radius_ * (flow_angle(q) - wa * flow_angle(pp.anchor_a) - wb * flow_angle(pp.anchor_b)) -

@@ -20,7 +20,9 @@
 //
 // The stick / slip / out status of the points and the anchors form a plan. A frozen plan (the outer loop
 // of the two-level iteration, with the Winkler form's region frozen alike) makes the residual smooth in
-// u; released, the plan follows the iterate (single loop).
+// u; released, the plan follows the iterate (single loop). Frozen or released, an entry anchor's weight
+// between its two points (where g crosses zero, entry_weight) follows u: a frozen plan holds the points'
+// status and which points their anchors lie between, not where the patch's edge lies between them.
 //
 // Planar mode (MODEL.md §7, slip angle; set_planar): the shear is a 2-vector with components along
 // t = ∇ξ/|∇ξ| and b = ∇η/|∇η| (η the support's lateral coordinate), and the support also drifts by d along
@@ -71,6 +73,10 @@ struct TreadTraction {
 // set_jacobian_smoothing): 1 at and below the friction-limited shear L (a frozen plan's sliding point may
 // lie below it at a later iterate), falling linearly to 0 at |s| = (1 + band) L, 0 beyond; 0 for band 0.
 double stick_tangent_weight(double shear_norm, double limit, double band);
+
+// Where the penetration crosses zero between the last point out of the patch (g_out) and the first in it
+// (g_in), as the weight of the latter: the entry anchor is (1 − w)·out + w·in, w in [0, 1].
+double entry_weight(double g_out, double g_in);
 
 class TreadFrictionForm final : public Form {
  public:
@@ -138,7 +144,7 @@ class TreadFrictionForm final : public Form {
     int other[2] = {-1, -1};
     Eigen::Matrix3d d_other[2] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
   };
-  PointForce point_force(int q, const FrictionPlanPoint& pp, const Eigen::VectorXd& u, bool released) const;
+  PointForce point_force(int q, const FrictionPlanPoint& pp, const Eigen::VectorXd& u) const;
   PointKinematics kinematics(int point, const Eigen::VectorXd& u) const;
   double flow_angle(int point) const { return direction_ * points_[point].v; }
   double slip_shear(int point, double penetration, double sign) const;
@@ -149,8 +155,8 @@ class TreadFrictionForm final : public Form {
   std::vector<TreadTraction> evaluate_planar(const Eigen::VectorXd& u) const;
   // Marches along line `l` with `plan`; fills per point of the line (in line order) its traction and,
   // with `derivatives`, the derivative of its force on the tyre w.r.t. the positions of the line's points
-  // first, ..., first + W − 1 (3 × 3W), `first` returned. `released`: the entry weights follow u.
-  int march_planar(int l, const FrictionPlan& plan, const Eigen::VectorXd& u, bool released, bool derivatives,
+  // first, ..., first + W − 1 (3 × 3W), `first` returned.
+  int march_planar(int l, const FrictionPlan& plan, const Eigen::VectorXd& u, bool derivatives,
                    std::vector<PlanarPoint>& out) const;
   // Elements whose DOFs a point's planar force depends on (its own first), per point (empty: out).
   std::vector<std::vector<int>> planar_dependencies(const FrictionPlan& plan) const;

@@ -47,6 +47,10 @@ Eigen::Matrix3d direction_derivative(const TravelCoordinate& c) {
 }
 }  // namespace
 
+double entry_weight(double g_out, double g_in) {
+  return g_in != g_out ? std::clamp(-g_out / (g_in - g_out), 0.0, 1.0) : 1.0;
+}
+
 double stick_tangent_weight(double shear_norm, double limit, double band) {
   if (!(band > 0.0)) return 0.0;
   return std::clamp(1.0 - (shear_norm / limit - 1.0) / band, 0.0, 1.0);
@@ -77,8 +81,7 @@ FrictionPlan TreadFrictionForm::plan_planar(const Eigen::VectorXd& u, const std:
         anchor = FrictionPlanPoint{};
         anchor.anchor_a = previous_out >= 0 ? previous_out : q;
         anchor.anchor_b = q;
-        const double w = previous_out >= 0 && g != previous_g ? -previous_g / (g - previous_g) : 1.0;
-        anchor.anchor_weight = std::clamp(w, 0.0, 1.0);
+        anchor.anchor_weight = previous_out >= 0 ? entry_weight(previous_g, g) : 1.0;
         const double wa = 1.0 - anchor.anchor_weight, wb = anchor.anchor_weight;
         const double angle = previous_out >= 0 ? wa * flow_angle(previous_out) + wb * flow_angle(q) : flow_angle(q);
         const Eigen::Vector2d at = previous_out >= 0 ? Eigen::Vector2d(wa * previous_coordinates + wb * xy) : xy;
@@ -109,7 +112,7 @@ FrictionPlan TreadFrictionForm::plan_planar(const Eigen::VectorXd& u, const std:
   return plan;
 }
 
-int TreadFrictionForm::march_planar(int l, const FrictionPlan& plan, const Eigen::VectorXd& u, bool released,
+int TreadFrictionForm::march_planar(int l, const FrictionPlan& plan, const Eigen::VectorXd& u,
                                     bool derivatives, std::vector<PlanarPoint>& out) const {
   const std::vector<int>& line = lines_[l];
   const int n = static_cast<int>(line.size());
@@ -175,16 +178,17 @@ int TreadFrictionForm::march_planar(int l, const FrictionPlan& plan, const Eigen
       if (derivatives) ds = provided_d.middleRows<2>(2 * j);
     } else {
       const int a = line_position_[pp.anchor_a], b = line_position_[pp.anchor_b];
-      const double wb = pp.anchor_weight, wa = 1.0 - wb;
       const PointKinematics &ka = at(a), &kb = at(b);
+      const double wb = a != b ? entry_weight(ka.penetration.value, kb.penetration.value) : pp.anchor_weight;
+      const double wa = 1.0 - wb;
       const double angle = wa * flow_angle(pp.anchor_a) + wb * flow_angle(pp.anchor_b);
       offset = -rolling_radius_ * angle * along + wa * coordinates(ka.travel, ka.lateral) +
                wb * coordinates(kb.travel, kb.lateral);
       if (derivatives) {
         ds.middleCols<3>(column(a)) += wa * coordinate_gradients(ka.travel, ka.lateral);
         ds.middleCols<3>(column(b)) += wb * coordinate_gradients(kb.travel, kb.lateral);
-        // Released plan: the entry weight w = −g_a / (g_b − g_a) follows u too (frozen: a constant).
-        if (released && a != b && wb > 0.0 && wb < 1.0) {
+        // The entry weight w = −g_a / (g_b − g_a) follows u too.
+        if (a != b && wb > 0.0 && wb < 1.0) {
           const double ga = ka.penetration.value, gb = kb.penetration.value, d2 = (gb - ga) * (gb - ga);
           const Eigen::Vector2d dc_dw =
               -rolling_radius_ * (flow_angle(pp.anchor_b) - flow_angle(pp.anchor_a)) * along +
@@ -331,7 +335,7 @@ void TreadFrictionForm::assemble_planar(const FormInput& input, SparseSystem& sy
       sums.reset(slots, st);
       for (int l : strips_[st]) {
         const std::vector<int>& line = lines_[l];
-        const int first = march_planar(l, plan, input.displacement, released, input.with_tangent, line_points);
+        const int first = march_planar(l, plan, input.displacement, input.with_tangent, line_points);
         for (int i = 0; i < static_cast<int>(line.size()); ++i) {
           const PlanarPoint& o = line_points[i];
           if (o.status == TreadContact::out) continue;
@@ -358,7 +362,7 @@ std::vector<TreadTraction> TreadFrictionForm::evaluate_planar(const Eigen::Vecto
   std::vector<TreadTraction> out(points_.size());
   std::vector<PlanarPoint> line_points;
   for (int l = 0; l < static_cast<int>(lines_.size()); ++l) {
-    march_planar(l, plan, u, false, false, line_points);
+    march_planar(l, plan, u, false, line_points);
     for (int i = 0; i < static_cast<int>(lines_[l].size()); ++i) {
       const PlanarPoint& o = line_points[i];
       TreadTraction& tr = out[lines_[l][i]];
