@@ -269,8 +269,8 @@ TEST(Cornering, MirroredSweepPointsEqualTheSolvedStates) {
 }
 
 // A rolling state's effort is bounded (ContactSettings::max_state_iterations): the bound is checked before
-// each stage, so one that cannot be reached within it is reported as not converged, with the reason, once
-// the stage under way ends. Here α = 10° with a bound of 5 Newton iterations, fewer than its first stage
+// each stage, so one that cannot be reached within it is reported as not converged, with the reason (and
+// the usual cause's README section), once the stage under way ends. Here α = 10° with a bound of 5 Newton iterations, fewer than its first stage
 // alone needs; that stage is expected to end within one Newton solve's limit (max_newton_iterations,
 // + 5 when converging fast).
 TEST(Cornering, AStateGivesUpWithinItsIterationBound) {
@@ -292,6 +292,8 @@ TEST(Cornering, AStateGivesUpWithinItsIterationBound) {
               bounded.failure.c_str());
   EXPECT_FALSE(bounded.converged);
   EXPECT_NE(bounded.failure.find("gave up after"), std::string::npos) << bounded.failure;
+  // and points to the usual cause, a mode of the mesh, and what to read about it
+  EXPECT_NE(bounded.failure.find("README, \"How fine a mesh\""), std::string::npos) << bounded.failure;
   EXPECT_LE(bounded.counts.newton_iterations, 5 + cs.max_newton_iterations + 5);
 }
 
