@@ -31,7 +31,7 @@ constexpr double kJacobianSmoothing = 0.1;  // TreadFrictionForm::set_jacobian_s
 constexpr double kDegree = 3.14159265358979323846 / 180.0;
 constexpr double kQuietSeconds = 10.0;      // a state taking longer reports its stages (set_progress)
 // Why a state gives up, most often. Measured: the main example's quick rig at 0.16 MPa gave up its 2800 N
-// α sweep past 3.1° on 64 × 12 full and reached 10° on 80 × 24 (11–13 Newton iterations per state).
+// α sweep past 3.1° on 64 × 12 full and reached 10° on 80 × 24 (8–13 Newton iterations per state).
 constexpr const char* kMeshModeHint =
     "a state that needs ever smaller steps is often a mode of the mesh (the wall's or the carcass's, at the "
     "scale of its elements): a finer mesh may reach it (README, \"How fine a mesh\")";
