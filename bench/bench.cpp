@@ -22,7 +22,7 @@
 #include "tirefem/analysis/inflation.hpp"
 #include "tirefem/analysis/rolling.hpp"
 #include "tirefem/case/case_reader.hpp"
-#include "tirefem/results/shell_results.hpp"
+#include "tirefem/report/shell_results.hpp"
 #include "tirefem/solver/blas_kernel.hpp"
 #include "tirefem/solver/heap_settings.hpp"
 

@@ -1,6 +1,6 @@
 // Reports of a static contact result, on hand-made results (a grid of tread points carrying a known
 // elliptic pressure field) and on a coarse mesh of the example tyre.
-#include "tirefem/results/footprint_report.hpp"
+#include "tirefem/report/footprint_report.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <numbers>
 
 #include "tirefem/case/case_reader.hpp"
-#include "tirefem/results/inflation_report.hpp"
+#include "tirefem/report/inflation_report.hpp"
 
 namespace tirefem {
 namespace {

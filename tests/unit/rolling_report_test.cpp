@@ -1,6 +1,6 @@
 // Reports of a rolling result, on a hand-made result: a half model's tread points on an (s, φ) grid with a
 // 2-line × 6-point contact patch whose points stick first, then slip; no solver runs.
-#include "tirefem/results/rolling_report.hpp"
+#include "tirefem/report/rolling_report.hpp"
 
 #include <gtest/gtest.h>
 

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "tirefem/analysis/tyre_test.hpp"
-#include "tirefem/results/tyre_test_report.hpp"
+#include "tirefem/report/tyre_test_report.hpp"
 
 namespace tirefem {
 namespace {

@@ -9,8 +9,8 @@
 #include <gtest/gtest.h>
 
 #include "contact_support.hpp"
-#include "tirefem/results/inflation_report.hpp"
-#include "tirefem/results/shell_results.hpp"
+#include "tirefem/report/inflation_report.hpp"
+#include "tirefem/report/shell_results.hpp"
 
 namespace tirefem::verification {
 namespace {

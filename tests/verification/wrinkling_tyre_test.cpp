@@ -17,7 +17,7 @@
 #include <gtest/gtest.h>
 
 #include "contact_support.hpp"
-#include "tirefem/results/shell_results.hpp"
+#include "tirefem/report/shell_results.hpp"
 #include "tirefem/tyre/ply_stiffness.hpp"
 
 namespace tirefem::verification {

@@ -25,8 +25,8 @@
 #include "tirefem/case/tyre_reader.hpp"
 #include "tirefem/io/json_summary.hpp"
 #include "tirefem/io/results_folder.hpp"
-#include "tirefem/results/footprint_report.hpp"
-#include "tirefem/results/rolling_report.hpp"
+#include "tirefem/report/footprint_report.hpp"
+#include "tirefem/report/rolling_report.hpp"
 #include "tirefem/solver/blas_kernel.hpp"
 
 namespace tirefem {

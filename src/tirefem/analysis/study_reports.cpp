@@ -6,14 +6,14 @@
 
 #include "tirefem/io/csv_writer.hpp"
 #include "tirefem/io/vtu_writer.hpp"
-#include "tirefem/results/footprint_report.hpp"
-#include "tirefem/results/inflation_report.hpp"
-#include "tirefem/results/cornering_report.hpp"
-#include "tirefem/results/rim_flange_report.hpp"
-#include "tirefem/results/rolling_report.hpp"
-#include "tirefem/results/shell_results.hpp"
+#include "tirefem/report/footprint_report.hpp"
+#include "tirefem/report/inflation_report.hpp"
+#include "tirefem/report/cornering_report.hpp"
+#include "tirefem/report/rim_flange_report.hpp"
+#include "tirefem/report/rolling_report.hpp"
+#include "tirefem/report/shell_results.hpp"
 #include "tirefem/magic_formula/tir_writer.hpp"
-#include "tirefem/results/tyre_test_report.hpp"
+#include "tirefem/report/tyre_test_report.hpp"
 
 namespace tirefem {
 

@@ -20,7 +20,7 @@
 #include "tirefem/io/csv_writer.hpp"
 #include "tirefem/io/plot_writer.hpp"
 #include "tirefem/io/vtu_writer.hpp"
-#include "tirefem/results/footprint_report.hpp"
+#include "tirefem/report/footprint_report.hpp"
 
 namespace tirefem {
 

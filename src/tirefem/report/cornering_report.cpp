@@ -1,4 +1,4 @@
-#include "tirefem/results/cornering_report.hpp"
+#include "tirefem/report/cornering_report.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "tirefem/results/rim_flange_report.hpp"
+#include "tirefem/report/rim_flange_report.hpp"
 #include "tirefem/road/support_surface.hpp"
 
 namespace tirefem {

@@ -1,4 +1,4 @@
-#include "tirefem/results/footprint_report.hpp"
+#include "tirefem/report/footprint_report.hpp"
 
 #include <fmt/format.h>
 
@@ -9,8 +9,8 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "tirefem/results/inflation_report.hpp"
-#include "tirefem/results/tread_point_grid.hpp"
+#include "tirefem/report/inflation_report.hpp"
+#include "tirefem/report/tread_point_grid.hpp"
 #include "tirefem/road/support_surface.hpp"
 
 namespace tirefem {

@@ -1,4 +1,4 @@
-#include "tirefem/results/inflation_report.hpp"
+#include "tirefem/report/inflation_report.hpp"
 
 #include <algorithm>
 #include <cmath>

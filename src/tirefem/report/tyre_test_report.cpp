@@ -1,4 +1,4 @@
-#include "tirefem/results/tyre_test_report.hpp"
+#include "tirefem/report/tyre_test_report.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -7,7 +7,7 @@
 #include "tirefem/io/csv_writer.hpp"
 #include "tirefem/io/plot_writer.hpp"
 #include "tirefem/io/vtu_writer.hpp"
-#include "tirefem/results/shell_results.hpp"
+#include "tirefem/report/shell_results.hpp"
 
 namespace tirefem {
 

@@ -1,4 +1,4 @@
-#include "tirefem/results/rolling_report.hpp"
+#include "tirefem/report/rolling_report.hpp"
 
 #include <fmt/format.h>
 
@@ -6,9 +6,9 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "tirefem/results/cornering_report.hpp"
-#include "tirefem/results/rim_flange_report.hpp"
-#include "tirefem/results/tread_point_grid.hpp"
+#include "tirefem/report/cornering_report.hpp"
+#include "tirefem/report/rim_flange_report.hpp"
+#include "tirefem/report/tread_point_grid.hpp"
 #include "tirefem/road/support_surface.hpp"
 
 namespace tirefem {

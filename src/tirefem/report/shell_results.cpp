@@ -1,4 +1,4 @@
-#include "tirefem/results/shell_results.hpp"
+#include "tirefem/report/shell_results.hpp"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "tirefem/results/rim_flange_report.hpp"
+#include "tirefem/report/rim_flange_report.hpp"
 
 #include <limits>
 

@@ -1,4 +1,4 @@
-#include "tirefem/results/footprint_report.hpp"
+#include "tirefem/report/footprint_report.hpp"
 
 #include <fmt/format.h>
 

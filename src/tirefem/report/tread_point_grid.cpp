@@ -1,4 +1,4 @@
-#include "tirefem/results/tread_point_grid.hpp"
+#include "tirefem/report/tread_point_grid.hpp"
 
 #include <algorithm>
 #include <cmath>
