@@ -270,9 +270,9 @@ TEST(Cornering, MirroredSweepPointsEqualTheSolvedStates) {
 
 // A rolling state's effort is bounded (ContactSettings::max_state_iterations): the bound is checked before
 // each stage, so one that cannot be reached within it is reported as not converged, with the reason (and
-// the usual cause's README section), once the stage under way ends. Here α = 10° with a bound of 5 Newton iterations, fewer than its first stage
-// alone needs; that stage is expected to end within one Newton solve's limit (max_newton_iterations,
-// + 5 when converging fast).
+// the usual cause's README section), once the stage under way ends. Here α = 10° with a bound of 5 Newton
+// iterations, fewer than its first stage alone needs; that stage is expected to end within one Newton
+// solve's limit (max_newton_iterations, + 5 when converging fast).
 TEST(Cornering, AStateGivesUpWithinItsIterationBound) {
   RollingStudy s;
   s.name = "bounded";
