@@ -58,7 +58,8 @@ class DeflectionPath {
   };
   // Moves the support to `deflection` from the nearest converged state, cutting the increment back by
   // halving (at most `max_cutbacks` times) when a solve fails. On success the state is recorded.
-  Step advance_to(double deflection, int max_cutbacks = 6);
+  static constexpr int kMaxCutbacks = 6;
+  Step advance_to(double deflection, int max_cutbacks = kMaxCutbacks);
 
   // A converged state found elsewhere (a load curve's), for the predictor only: the current state stays.
   void add_known_state(double deflection, Eigen::VectorXd u) {

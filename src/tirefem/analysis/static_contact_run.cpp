@@ -94,10 +94,10 @@ StaticContactRun::StaticContactRun(const TyreMesh& tm, const TyreDescription& ty
         start_, result_.failure));
 }
 
-bool StaticContactRun::solve_at(double deflection) {
+bool StaticContactRun::solve_at(double deflection, int max_cutbacks) {
   const auto t0 = StaticContactClock::now();
   const int factorizations_before = newton_->linear_stats().factorizations;
-  const DeflectionPath::Step step = path_->advance_to(deflection);
+  const DeflectionPath::Step step = path_->advance_to(deflection, max_cutbacks);
   if (!step.converged) {
     result_.failure = step.failure;
     return false;

@@ -37,8 +37,9 @@ class StaticContactRun {
   const std::vector<Eigen::Vector3d>& inflated_tread() const { return inflated_tread_; }
   const SupportSurface& support() const { return *support_; }
 
-  // Solves at δz and records the load point; false (and result_.failure) when it does not converge.
-  bool solve_at(double deflection);
+  // Solves at δz and records the load point; false (and result_.failure) when it does not converge after
+  // at most `max_cutbacks` halvings of the increment.
+  bool solve_at(double deflection, int max_cutbacks = DeflectionPath::kMaxCutbacks);
   // The final state and the solver's counters into the result.
   void finish();
 
