@@ -1,6 +1,6 @@
 #pragma once
 // Helpers of the case reader's unit tests (case_reader_test.cpp, case_reader_studies_test.cpp,
-// case_reader_rolling_test.cpp): the example case as text, edits of it, the error that parsing a text or
+// case_reader_rolling*_test.cpp): the example case as text, edits of it, the error that parsing a text or
 // validating a case gives and the "case.toml:LINE:COL: " an error starts with.
 #include <gtest/gtest.h>
 
@@ -11,6 +11,8 @@
 #include <sstream>
 #include <string>
 #include <string_view>
+
+#include <fmt/format.h>
 
 #include "tirefem/case/case_reader.hpp"
 
@@ -48,6 +50,15 @@ inline std::string tyre_with(std::string_view studies) {
   text.erase(at);
   return text + std::string(studies);
 }
+
+// A rolling study on the plane with one free state, plus `extra` lines (after the support line).
+inline std::string rolling_with(std::string_view extra,
+                                std::string_view states = "states = [{ state = \"free\" }]") {
+  return tyre_with(
+      fmt::format("[[rolling]]\nname = \"r\"\nsupport = {{ kind = \"plane\" }}\n{}\n{}\n", extra, states));
+}
+// One state table in a rolling study.
+inline std::string state(std::string_view table) { return rolling_with("", fmt::format("states = [{}]", table)); }
 
 // The message of the CaseError that parsing `text` (as "case.toml") throws; "(no error)" if none.
 inline std::string error_of(const std::string& text) {
