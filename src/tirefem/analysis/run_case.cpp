@@ -21,12 +21,10 @@
 #include "tirefem/analysis/rolling.hpp"
 #include "tirefem/analysis/shared_states.hpp"
 #include "tirefem/analysis/study_reports.hpp"
+#include "tirefem/analysis/study_runs.hpp"
 #include "tirefem/analysis/tyre_test.hpp"
-#include "tirefem/case/tyre_reader.hpp"
 #include "tirefem/io/json_summary.hpp"
 #include "tirefem/io/results_folder.hpp"
-#include "tirefem/report/footprint_report.hpp"
-#include "tirefem/report/rolling_report.hpp"
 #include "tirefem/solver/blas_kernel.hpp"
 
 namespace tirefem {
@@ -41,20 +39,7 @@ void report(const ProgressSink& progress, const std::string& message) {
   if (progress) progress(message);
 }
 
-std::string incomplete_message(const StaticContactResult& r) {
-  return fmt::format("'{}' stopped at δz = {:.3g} mm: {}", r.name, r.final_state.deflection_mm, r.failure);
-}
 
-
-// One study's solve, kept until its results are written (in the case's order, whatever order the
-// studies ran in).
-struct StudyRun {
-  std::string phase;  // "load curve 'plane'", ...
-  double seconds = 0.0;
-  std::string error;  // the study threw: why
-  std::optional<StaticContactResult> contact;
-  std::optional<RollingResult> rolling;
-};
 
 // The progress of studies that run at the same time: one line at a time, each prefixed by its study's
 // name when more than one study runs; a stop (interrupt, or another study's worker failing) ends the study
@@ -158,8 +143,7 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
   // support and mesh of an earlier footprint (or rolling study) runs after it, in its chain, and starts
   // from its footprint. Chains run side by side (parallel_chains.hpp).
   // A tyre test is a study per load and one for its load–deflection curve.
-  int rig_runs = 0;
-  for (const TyreTestStudy& s : c.tyre_tests) rig_runs += 2 * static_cast<int>(s.load_factors.size()) + 1;
+  const int rig_runs = tyre_test_run_count(c);
   const int study_count =
       static_cast<int>(c.load_curves.size() + c.footprints.size() + c.rolling.size()) + rig_runs;
   std::vector<StudyRun> runs(study_count);
@@ -276,7 +260,6 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
     TyreTestLongitudinalModel longitudinal = TyreTestLongitudinalModel::full;
     std::unique_ptr<TyreTestProgress> progress;
   };
-  constexpr std::array kRigSeries{TyreTestSeries::longitudinal, TyreTestSeries::lateral};
   std::vector<RigPlan> rigs;
   for (const TyreTestStudy& s : c.tyre_tests) {
     RigPlan& r = rigs.emplace_back();
@@ -406,69 +389,7 @@ RunOutcome run_case(const Case& c, const RunOptions& options) {
   }
   times.begin("writing the studies' results");
   ReportWriter plots(folder, progress);
-  toml::array curve_summaries, footprint_summaries, rolling_summaries;
-  std::vector<const StaticContactResult*> curves;
-  k = 0;
-  for (std::size_t i = 0; i < c.load_curves.size(); ++i, ++k) {
-    if (!runs[k].contact) continue;
-    StaticContactResult& r = *runs[k].contact;
-    if (!r.completed) {
-      report(progress, "warning: load curve " + incomplete_message(r) + " (converged points kept)");
-      incomplete.push_back(incomplete_message(r));
-    }
-    write_csv(folder.path("load_curve_" + r.name + ".csv"), load_curve_table(r));
-    toml::table t = load_curve_summary(r);
-    t.insert("solver", counters_table(r.counters));
-    add_krylov(*t["solver"].as_table(), r.counters);
-    curve_summaries.push_back(std::move(t));
-    r.final_state.displacement.resize(0);  // keep the curve, not its states
-    r.inflation.displacement.resize(0);
-    r.path.clear();
-    curves.push_back(&r);
-  }
-  if (!curves.empty()) {
-    plots.attempt("load characteristic", [&] { plots.plot("load_characteristic", load_characteristic_plot(curves)); });
-    summary.insert("load_curves", std::move(curve_summaries));
-  }
-  for (std::size_t i = 0; i < c.footprints.size(); ++i, ++k) {
-    if (!runs[k].contact) continue;
-    const StaticContactResult& r = *runs[k].contact;
-    if (!r.completed) {
-      report(progress, "warning: footprint " + incomplete_message(r));
-      incomplete.push_back(incomplete_message(r));
-    }
-    footprint_summaries.push_back(report_footprint(folder, plots, progress, tm, c, r));
-  }
-  if (!c.footprints.empty()) summary.insert("footprints", std::move(footprint_summaries));
-  for (std::size_t i = 0; i < c.rolling.size(); ++i, ++k) {
-    if (!runs[k].rolling) continue;
-    const RollingResult& r = *runs[k].rolling;
-    if (!r.completed) {
-      const std::string m = fmt::format("rolling '{}': {}", r.name, r.failure);
-      report(progress, "warning: " + m + " (converged states kept)");
-      incomplete.push_back(m);
-    }
-    rolling_summaries.push_back(report_rolling(folder, plots, tyres.mesh(c.rolling[i].mesh.value_or(c.mesh)), c, r));
-  }
-  if (!c.rolling.empty()) summary.insert("rolling", std::move(rolling_summaries));
-  toml::array rig_summaries;
-  for (const TyreTestStudy& s : c.tyre_tests) {
-    std::vector<TyreTestLoadRuns> loads(s.load_factors.size());
-    for (TyreTestLoadRuns& load : loads)
-      for (std::size_t j = 0; j < kRigSeries.size(); ++j, ++k) {
-        load.series.push_back(runs[k].rolling ? &*runs[k].rolling : nullptr);
-        load.errors.push_back(runs[k].error);
-      }
-    const StudyRun& vertical = runs[k++];
-    const TyreTestResult t =
-        assemble_tyre_test(s, case_reading::tyre_outer_radius(c.tyre), loads, vertical.contact, vertical.error);
-    for (const std::string& m : t.failures) {
-      report(progress, fmt::format("warning: tyre test '{}': {} (converged points kept)", s.name, m));
-      incomplete.push_back(fmt::format("tyre test '{}': {}", s.name, m));
-    }
-    rig_summaries.push_back(report_tyre_test(folder, plots, progress, c, t));
-  }
-  if (!c.tyre_tests.empty()) summary.insert("tyre_tests", std::move(rig_summaries));
+  write_study_results(c, tyres, runs, folder, plots, progress, summary, incomplete);
   // The plots still rendering in the background are waited for here (a failed one is a skipped report).
   std::vector<std::string> skipped_reports = inflation_plots.skipped();
   const std::vector<std::string>& skipped_plots = plots.skipped();
