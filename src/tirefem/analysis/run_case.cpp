@@ -1,12 +1,10 @@
 #include "tirefem/analysis/run_case.hpp"
 
-#include <array>
 #include <atomic>
 #include <chrono>
 #include <mutex>
 #include <map>
 #include <memory>
-#include <tuple>
 #include <optional>
 #include <stdexcept>
 
@@ -38,8 +36,6 @@ toml::table blas_table() {
 void report(const ProgressSink& progress, const std::string& message) {
   if (progress) progress(message);
 }
-
-
 
 // The progress of studies that run at the same time: one line at a time, each prefixed by its study's
 // name when more than one study runs; a stop (interrupt, or another study's worker failing) ends the study

@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "tirefem/case/tyre_reader.hpp"
-#include "tirefem/io/json_summary.hpp"
+#include "tirefem/io/csv_writer.hpp"
 #include "tirefem/report/footprint_report.hpp"
 #include "tirefem/report/rolling_report.hpp"
 
