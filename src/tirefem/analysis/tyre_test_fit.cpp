@@ -6,25 +6,30 @@
 #include <fmt/format.h>
 
 namespace tirefem {
+namespace {
+// mm → m by a division: 285 mm is then the double nearest 0.285 m, which the .tir prints as "0.285"
+// (285 × 1e-3 prints as 0.28500000000000003, since 1e-3 itself is not exact).
+double metres(double mm) { return mm / 1000.0; }
+}  // namespace
 
 RigData tyre_test_rig_data(const TyreTestResult& t) {
   RigData d;
   d.FNOMIN = t.nominal_load_N;
-  d.UNLOADED_RADIUS = t.unloaded_radius_mm * 1e-3;
+  d.UNLOADED_RADIUS = metres(t.unloaded_radius_mm);
   for (const TyreTestRow& r : t.rows)
     d.points.push_back({r.Fz_N, r.kappa, r.alpha_rad, r.gamma_rad, r.Fx_N, r.Fy_N, r.Mz_Nm, r.Mx_Nm});
   for (const TyreTestLoad& l : t.loads)
     if (l.effective_rolling_radius_mm && l.Fz_N > 0)
-      d.radii.push_back({l.Fz_N, *l.effective_rolling_radius_mm * 1e-3, l.loaded_radius_mm * 1e-3});
+      d.radii.push_back({l.Fz_N, metres(*l.effective_rolling_radius_mm), metres(l.loaded_radius_mm)});
   for (const TyreTestLoad& l : t.loads) {
     RelaxationPoint p{l.Fz_N, {}, {}};
-    if (l.longitudinal_relaxation_length_mm) p.sigma_kappa = *l.longitudinal_relaxation_length_mm * 1e-3;
-    if (l.lateral_relaxation_length_mm) p.sigma_alpha = *l.lateral_relaxation_length_mm * 1e-3;
+    if (l.longitudinal_relaxation_length_mm) p.sigma_kappa = metres(*l.longitudinal_relaxation_length_mm);
+    if (l.lateral_relaxation_length_mm) p.sigma_alpha = metres(*l.lateral_relaxation_length_mm);
     if (l.Fz_N > 0 && (p.sigma_kappa || p.sigma_alpha)) d.relaxation.push_back(p);
   }
   if (t.vertical)
     for (const LoadPoint& p : t.vertical->points)
-      if (p.patch.Qz_N > 0 && p.deflection_mm > 0) d.load_deflection.push_back({p.deflection_mm * 1e-3, p.patch.Qz_N});
+      if (p.patch.Qz_N > 0 && p.deflection_mm > 0) d.load_deflection.push_back({metres(p.deflection_mm), p.patch.Qz_N});
   return d;
 }
 
@@ -42,9 +47,9 @@ TyreTestFit fit_tyre_test(const TyreTestResult& t, const TyreDescription& tyre, 
   double width = 0;
   for (const Eigen::Vector2d& p : tyre.profile) width = std::max(width, 2 * p.x());
   c.UNLOADED_RADIUS = data.UNLOADED_RADIUS;
-  c.WIDTH = width * 1e-3;
-  c.RIM_RADIUS = tyre.profile.back().y() * 1e-3;
-  c.RIM_WIDTH = 2 * tyre.profile.back().x() * 1e-3;
+  c.WIDTH = metres(width);
+  c.RIM_RADIUS = metres(tyre.profile.back().y());
+  c.RIM_WIDTH = metres(2 * tyre.profile.back().x());
   c.ASPECT_RATIO = width > 0 ? (t.unloaded_radius_mm - tyre.profile.back().y()) / width : 0.0;
   c.FNOMIN = t.nominal_load_N;
   // The ranges the rig covered.
