@@ -138,6 +138,7 @@ TEST(CliTyreTest, RigWritesTheTableAndAFittedTirFile) {
     std::ifstream tir_text(out / "rig/rig.tir");
     std::string line;
     bool ptx3_flagged = false, combined_flagged = false, rolling_resistance_flagged = false;
+    bool radius_as_entered = false;
     const auto flagged = [&](const char* key, const char* why) {
       return line.rfind(key, 0) == 0 && line.find(why) != std::string::npos;
     };
@@ -147,7 +148,11 @@ TEST(CliTyreTest, RigWritesTheTableAndAFittedTirFile) {
       combined_flagged = combined_flagged || flagged("RHX1 ", "not determined by the test's combined-slip points");
       EXPECT_FALSE(flagged("RBX1 ", "not determined") || flagged("RBY1 ", "not determined")) << line;
       rolling_resistance_flagged = rolling_resistance_flagged || flagged("QSY1 ", "no rolling resistance");
+      // The case's 285 mm, printed as the user would write it (not 0.28500000000000003).
+      radius_as_entered = radius_as_entered || (line.rfind("UNLOADED_RADIUS ", 0) == 0 &&
+                                                line.find("= 0.285 ") != std::string::npos);
     }
+    EXPECT_TRUE(radius_as_entered);
     EXPECT_TRUE(ptx3_flagged);
     EXPECT_TRUE(combined_flagged);
     EXPECT_TRUE(rolling_resistance_flagged);
