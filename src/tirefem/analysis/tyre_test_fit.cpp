@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "tirefem/magic_formula/vertical_fit.hpp"
+
 namespace tirefem {
 namespace {
 // mm → m by a division: 285 mm is then the double nearest 0.285 m, which the .tir prints as "0.285"
@@ -113,6 +115,9 @@ TyreTestFit fit_tyre_test(const TyreTestResult& t, const TyreDescription& tyre, 
                          ? "not determined by the test's combined-slip points: neutral value"
                          : "not determined: no combined-slip points; neutral value, with which kappa and alpha do "
                            "not reduce each other's force";
+  if (c.BREFF == kMaxBreff)
+    f.notes["BREFF"] = fmt::format("at the fit's bound {}: the test's loads cannot tell atan(BREFF Fz/FNOMIN) from "
+                                   "pi/2, DREFF and FREFF fitted with it", kMaxBreff);
   f.notes["WIDTH"] = "twice the carcass line's largest x";
   f.notes["RIM_RADIUS"] = "bead point of the carcass line";
   f.notes["RIM_WIDTH"] = "twice the bead point's x";

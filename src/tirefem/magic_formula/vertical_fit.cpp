@@ -32,7 +32,6 @@ ChannelFitError channel_error(const char* channel, const std::vector<double>& re
 // load above half the nominal one, so the data cannot tell it from a constant. With three loads the
 // unbounded fit then ran BREFF off to 1e10–1e12 (the example's quick rig), which is a step in Re at
 // Fz = 0 that no tyre has. Published passenger-tyre files have 7–10.
-constexpr double kMinBreff = 0.1, kMaxBreff = 100.0;
 constexpr magic_formula_fit::LogBounded kBreff{kMinBreff, kMaxBreff};
 
 // (R0 - Re) Cz/FNOMIN = DREFF atan(BREFF rho) + FREFF rho, rho = Fz/FNOMIN.
@@ -138,7 +137,11 @@ ChannelFitError fit_effective_rolling_radius(std::span<const RollingRadiusPoint>
     Eigen::VectorXd u(3);
     u << kBreff.parameter(best_B), DF[0], DF[1];
     lm.minimize(u);
+    // A fit that ran into a bound ends a little inside it (99.99999999999827) or, by round-off, a few ulps
+    // beyond (100.00000000000004): it is set on the bound, so the file says where the fit ended.
     c.BREFF = kBreff.value(u[0]);
+    for (const double bound : {kMinBreff, kMaxBreff})
+      if (std::abs(c.BREFF - bound) <= 1e-9 * bound) c.BREFF = bound;
     c.DREFF = u[1];
     c.FREFF = u[2];
   }

@@ -22,6 +22,9 @@
 
 namespace tirefem {
 
+// BREFF's range in the fit (vertical_fit.cpp says why it is bounded).
+inline constexpr double kMinBreff = 0.1, kMaxBreff = 100.0;
+
 struct LoadDeflectionPoint {
   double deflection = 0;  // m
   double Fz = 0;          // N
