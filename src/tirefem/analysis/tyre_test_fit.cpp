@@ -115,9 +115,13 @@ TyreTestFit fit_tyre_test(const TyreTestResult& t, const TyreDescription& tyre, 
                          ? "not determined by the test's combined-slip points: neutral value"
                          : "not determined: no combined-slip points; neutral value, with which kappa and alpha do "
                            "not reduce each other's force";
+  // A BREFF fit that ran into a bound ends on it (vertical_fit.cpp): the file says so, and why.
   if (c.BREFF == kMaxBreff)
     f.notes["BREFF"] = fmt::format("at the fit's bound {}: the test's loads cannot tell atan(BREFF Fz/FNOMIN) from "
                                    "pi/2, DREFF and FREFF fitted with it", kMaxBreff);
+  else if (c.BREFF == kMinBreff)
+    f.notes["BREFF"] = fmt::format("at the fit's bound {}: atan(BREFF Fz/FNOMIN) is then nearly a line in Fz, which "
+                                   "the test's loads cannot tell from FREFF's; DREFF and FREFF fitted with it", kMinBreff);
   f.notes["WIDTH"] = "twice the carcass line's largest x";
   f.notes["RIM_RADIUS"] = "bead point of the carcass line";
   f.notes["RIM_WIDTH"] = "twice the bead point's x";
