@@ -132,8 +132,9 @@ TEST(MagicFormulaRigFit, RecoversTheCoefficientsFromTheRigTable) {
 
 // Three loads whose fall of Re is a constant plus a line in Fz (what the example's quick rig gives, near
 // enough): no finite BREFF fits it exactly, and unbounded the fit ran BREFF off to 1e10-1e12, a step in Re
-// at zero load. Bounded, BREFF ends on its bound 100 (set there exactly: the .tir then says so), and Re is fitted to 0.08% of its largest fall from R0 (5.5 µm
-// of 7.1 mm: atan(100 rho) falls short of π/2 by 0.02 at rho = 0.5).
+// at zero load. Bounded, BREFF ends on its bound 100 (set there exactly: the .tir then says so), and Re
+// is fitted to 0.08% of its largest fall from R0 (5.5 µm of 7.1 mm: atan(100 rho) falls short of π/2 by
+// 0.02 at rho = 0.5).
 TEST(MagicFormulaRigFit, TheEffectiveRadiusFitKeepsBreffBounded) {
   MagicFormulaCoefficients c = truth();
   const double R0 = c.UNLOADED_RADIUS, Fz0 = c.FNOMIN, Cz = c.VERTICAL_STIFFNESS;

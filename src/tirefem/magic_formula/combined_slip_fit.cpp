@@ -124,6 +124,8 @@ CombinedSlipFit fit_combined_slip(std::span<const TyreTestPoint> all, MagicFormu
     }
     if (best_u.size() != f.inputs()) continue;
     c = f.coefficients(best_u);
+    c.*(w.slope) = kSlope.result(best_u[0]);  // on a bound it ran into (LogBounded::result)
+    c.*(w.shape) = kShape.result(best_u[1]);
     ChannelFitError e;
     e.channel = w.name;
     e.points = static_cast<int>(points.size());

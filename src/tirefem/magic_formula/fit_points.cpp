@@ -119,6 +119,13 @@ double LogBounded::value(double v) const {
   return std::exp(a + 0.5 * (b - a) * (1.0 + std::tanh(v)));
 }
 
+double LogBounded::result(double v) const {
+  const double x = std::clamp(value(v), lo, hi);
+  for (const double bound : {lo, hi})
+    if (std::abs(x - bound) <= 1e-9 * bound) return bound;
+  return x;
+}
+
 double LogBounded::parameter(double x) const {
   const double a = std::log(lo), b = std::log(hi);
   return std::atanh(std::clamp(2.0 * (std::log(x) - a) / (b - a) - 1.0, -0.99, 0.99));

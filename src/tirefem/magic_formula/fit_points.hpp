@@ -49,10 +49,13 @@ std::pair<double, double> fit_line(const std::vector<double>& x, const std::vect
 
 // A positive coefficient kept within [lo, hi] smoothly for Levenberg-Marquardt, which then varies v ∈ ℝ:
 // value(v) = exp(log lo + ½ (log hi − log lo)(1 + tanh v)); parameter() is its inverse, kept off the
-// saturated ends (|tanh v| ≤ 0.99).
+// saturated ends (|tanh v| ≤ 0.99). result() is the value a fit reports: a fit that ran into a bound
+// ends a little inside it (99.99999999999827 for 100) or, exp(log hi) by round-off, a few ulps beyond
+// (100.00000000000004); within 1e-9 of a bound it is set on it, so the coefficient says where it ended.
 struct LogBounded {
   double lo = 0, hi = 0;
   double value(double v) const;
+  double result(double v) const;
   double parameter(double x) const;
 };
 

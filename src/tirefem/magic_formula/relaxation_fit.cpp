@@ -163,7 +163,7 @@ std::vector<ChannelFitError> fit_relaxation_lengths(std::span<const RelaxationPo
       Eigen::VectorXd u(2);
       u << linear_fit(rho, ya, 1, basis(best_peak), residual)[0], kPeak.parameter(best_peak);
       minimise(LengthResidual{&rho, &ya, true}, u);
-      c.PTY1 = u[0], c.PTY2 = kPeak.value(u[1]);
+      c.PTY1 = u[0], c.PTY2 = kPeak.result(u[1]);
     }
     std::vector<double> data;
     for (const RelaxationPoint& p : points)

@@ -137,11 +137,7 @@ ChannelFitError fit_effective_rolling_radius(std::span<const RollingRadiusPoint>
     Eigen::VectorXd u(3);
     u << kBreff.parameter(best_B), DF[0], DF[1];
     lm.minimize(u);
-    // A fit that ran into a bound ends a little inside it (99.99999999999827) or, by round-off, a few ulps
-    // beyond (100.00000000000004): it is set on the bound, so the file says where the fit ended.
-    c.BREFF = kBreff.value(u[0]);
-    for (const double bound : {kMinBreff, kMaxBreff})
-      if (std::abs(c.BREFF - bound) <= 1e-9 * bound) c.BREFF = bound;
+    c.BREFF = kBreff.result(u[0]);  // on the bound if it ran into one: the file then says so
     c.DREFF = u[1];
     c.FREFF = u[2];
   }
